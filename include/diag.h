@@ -1,0 +1,40 @@
+/* Status codes and diagnostics.  Library functions return 0 or a negative
+ * enum rt_err and describe the failure in a struct diag; only the CLI prints
+ * one and picks an exit code. */
+#ifndef RT_DIAG_H
+#define RT_DIAG_H
+
+enum rt_err {
+	RT_OK = 0,
+	RT_E_SYNTAX,		/* the scene text does not fit the format */
+	RT_E_RANGE,		/* a value is outside its allowed range or a limit */
+	RT_E_NOMEM,
+	RT_E_IO,
+	RT_E_INVALID,		/* a bad argument from the caller (camera, options) */
+	RT_E_INTERRUPTED,
+};
+
+#define RT_DIAG_FILE_MAX 256
+#define RT_DIAG_MSG_MAX 512
+
+struct diag {
+	char file[RT_DIAG_FILE_MAX];	/* empty when the error has no file */
+	int line, col;			/* 1-based; 0 when unknown */
+	char msg[RT_DIAG_MSG_MAX];
+};
+
+void diag_clear(struct diag *d);
+
+/* Fills d and returns -err, so that `return diag_set(...)` reads naturally. */
+int diag_set(struct diag *d, enum rt_err err, const char *file, int line, int col,
+	     const char *fmt, ...)
+#if defined(__GNUC__)
+	__attribute__((format(printf, 6, 7)))
+#endif
+	;
+
+/* Formats "FILE:LINE:COL: KIND: MSG" (parts without a value are left out,
+ * and "whitted: KIND: MSG" stands for a diagnostic without a file). */
+void diag_format(const struct diag *d, const char *kind, char *buf, unsigned long size);
+
+#endif

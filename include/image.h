@@ -1,0 +1,44 @@
+/* 8-bit RGB images and their writers (PNG, 24-bit BMP, binary PPM). */
+#ifndef RT_IMAGE_H
+#define RT_IMAGE_H
+
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "diag.h"
+
+struct image {
+	int width, height;
+	uint8_t *pixels;	/* rows top to bottom, 3 bytes per pixel */
+};
+
+enum image_format {
+	RT_FORMAT_UNKNOWN = 0,
+	RT_FORMAT_PNG,
+	RT_FORMAT_BMP,
+	RT_FORMAT_PPM,
+};
+
+int image_alloc(struct image *img, int width, int height, struct diag *d);
+void image_free(struct image *img);
+
+/* The format named by a path's extension (case-insensitive), or UNKNOWN. */
+enum image_format image_format_from_path(const char *path);
+/* "png", "bmp", "ppm" to the format, or UNKNOWN. */
+enum image_format image_format_from_name(const char *name);
+
+/* Writers to an open stream; they report I/O errors through the diag. */
+int image_write_png(const struct image *img, FILE *f, struct diag *d);
+int image_write_bmp(const struct image *img, FILE *f, struct diag *d);
+int image_write_ppm(const struct image *img, FILE *f, struct diag *d);
+
+/* Writes img to path.  A regular (or new) file is written to a temporary
+ * file in the same directory and renamed over path, so that a failure never
+ * leaves a partial image; anything else (a pipe, a device) is written
+ * directly.  When cancel becomes non-zero during the write, it fails with
+ * RT_E_INTERRUPTED and leaves nothing behind. */
+int image_write(const struct image *img, const char *path, enum image_format fmt,
+		const volatile sig_atomic_t *cancel, struct diag *d);
+
+#endif

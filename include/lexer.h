@@ -1,0 +1,32 @@
+/* Tokens of a scene file held in memory: whitespace-separated words, with
+ * '#', '//' and a lone '-' starting comments that run to the end of line. */
+#ifndef RT_LEXER_H
+#define RT_LEXER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#define RT_TOKEN_MAX 256	/* longest token accepted, in bytes */
+
+struct token {
+	const char *text;	/* not NUL-terminated; NULL at end of file */
+	size_t len;
+	int line, col;		/* 1-based position of the first byte */
+};
+
+struct lexer {
+	const char *pos, *end;
+	int line, col;
+};
+
+void lexer_init(struct lexer *lx, const char *text, size_t len);
+/* The next token, or one with text NULL (and the end's position) at EOF. */
+struct token lexer_next(struct lexer *lx);
+/* Parses a whole token as a finite decimal real, as strtod reads it but
+ * without nan, inf or hex.  Returns false when it is not one. */
+bool lexer_number(const struct token *t, double *out);
+/* True when strtod would read the whole token (nan, inf and hex included):
+ * the token is meant as a number even if it is not an acceptable one. */
+bool lexer_looks_numeric(const struct token *t);
+
+#endif

@@ -1,0 +1,78 @@
+/* The primitive interface.  Each primitive is one file under src/shapes/
+ * that fills in a static const struct shape_ops; the registry maps scene
+ * keywords to tables.  Outside src/shapes/ only the wrappers below call
+ * through the table, so the NULL checks for optional members live there. */
+#ifndef RT_SHAPE_H
+#define RT_SHAPE_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "aabb.h"
+#include "material.h"
+#include "ray.h"
+
+struct parser;
+struct shape;
+struct pov_options;
+
+struct shape_ops {
+	const char *keyword;	/* scene-file keyword, unique */
+
+	/* Reads the geometry and material after the keyword.  Returns 0 with a
+	 * whole shape in *out, or a negative enum rt_err with *out NULL and the
+	 * parser's diagnostic filled in. */
+	int (*parse)(struct parser *p, struct shape **out);
+	/* Nearest hit with t in (t_min, *t_max); on a hit shrinks *t_max to it.
+	 * The direction need not be unit length. */
+	bool (*intersect)(const struct shape *s, const struct ray *r,
+			  double t_min, double *t_max);
+	/* Unit normal at a point on the surface, in world space (either side). */
+	struct vec3 (*normal)(const struct shape *s, struct vec3 p);
+	/* Writes the shape, with its texture, as one POV-Ray object. */
+	int (*export_pov)(const struct shape *s, FILE *out,
+			  const struct pov_options *opt);
+	void (*destroy)(struct shape *s);
+
+	/* Optional.  NULL: the material colour everywhere. */
+	struct color (*color_at)(const struct shape *s, struct vec3 p);
+	/* Optional.  NULL or false: the shape is unbounded. */
+	bool (*bounds)(const struct shape *s, struct aabb *out);
+	/* Optional.  A line for the scene's notes when the shape can never be
+	 * seen (a degenerate triangle); NULL when it is fine. */
+	const char *(*degenerate)(const struct shape *s);
+};
+
+struct shape {
+	const struct shape_ops *ops;
+	struct material mat;
+};
+
+static inline bool shape_intersect(const struct shape *s, const struct ray *r,
+				   double t_min, double *t_max)
+{
+	return s->ops->intersect(s, r, t_min, t_max);
+}
+
+static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
+{
+	return s->ops->normal(s, p);
+}
+
+struct color shape_color_at(const struct shape *s, struct vec3 p);
+bool shape_bounds(const struct shape *s, struct aabb *out);
+const char *shape_degenerate(const struct shape *s);
+int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt);
+void shape_destroy(struct shape *s);
+
+/* The registry: the table for a scene keyword, or NULL. */
+const struct shape_ops *shape_ops_find(const char *keyword, size_t len);
+/* The registered tables in order, NULL-terminated. */
+const struct shape_ops *const *shape_ops_all(void);
+/* "sphere, triangle, general": for error messages. */
+const char *shape_keywords(void);
+
+/* Primitives that the registry does not parse from files. */
+struct shape *floor_create(double width, double tile);
+
+#endif

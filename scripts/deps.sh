@@ -1,0 +1,23 @@
+#!/bin/sh
+# Installs the Debian packages a make target needs, when some are missing:
+# with apt-get when run as root, otherwise by printing the command to run.
+# Usage: scripts/deps.sh PACKAGE...
+missing=""
+for pkg in "$@"; do
+	status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null)
+	case "$status" in
+	*"install ok installed"*) ;;
+	*) missing="$missing $pkg" ;;
+	esac
+done
+[ -z "$missing" ] && exit 0
+if [ "$(id -u)" = 0 ]; then
+	echo "deps: installing$missing"
+	export DEBIAN_FRONTEND=noninteractive
+	apt-get update -qq >/dev/null && apt-get install -y -qq --no-install-recommends $missing >/dev/null ||
+		{ echo "deps: apt-get install$missing failed" >&2; exit 1; }
+	exit 0
+fi
+echo "deps: missing Debian packages; run as root:" >&2
+echo "  apt-get install -y$missing" >&2
+exit 1

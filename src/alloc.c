@@ -1,0 +1,64 @@
+/* The library's allocator: the C library's, plus a switch that makes
+ * allocations fail from a chosen one on, for the allocation-failure tests. */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "alloc.h"
+
+/* Only the tests set these, from one thread, before any render starts. */
+static unsigned long alloc_count;
+static unsigned long alloc_fail_at;
+
+static int alloc_should_fail(void)
+{
+	alloc_count++;
+	return alloc_fail_at != 0 && alloc_count >= alloc_fail_at;
+}
+
+unsigned long rt_alloc_fail_from(unsigned long n)
+{
+	unsigned long made = alloc_count;
+
+	alloc_count = 0;
+	alloc_fail_at = n;
+	return made;
+}
+
+void *rt_malloc(size_t size)
+{
+	if (alloc_should_fail())
+		return NULL;
+	return malloc(size ? size : 1);
+}
+
+void *rt_calloc(size_t count, size_t size)
+{
+	if (alloc_should_fail())
+		return NULL;
+	return calloc(count ? count : 1, size ? size : 1);
+}
+
+void *rt_reallocarray(void *p, size_t count, size_t size)
+{
+	if (size != 0 && count > SIZE_MAX / size)
+		return NULL;
+	if (alloc_should_fail())
+		return NULL;
+	return realloc(p, count != 0 && size != 0 ? count * size : 1);
+}
+
+void rt_free(void *p)
+{
+	free(p);
+}
+
+char *rt_strdup(const char *s)
+{
+	size_t n = strlen(s) + 1;
+	char *copy = rt_malloc(n);
+
+	if (copy)
+		memcpy(copy, s, n);
+	return copy;
+}

@@ -1,0 +1,61 @@
+/* The pinhole camera of the assignment: a vertical field of view on a
+ * square image, one ray through each pixel's centre. */
+#include <math.h>
+
+#include "camera.h"
+
+void camera_params_default(struct camera_params *p)
+{
+	p->eye = RT_CAMERA_EYE;
+	p->look = RT_CAMERA_LOOK;
+	p->up = RT_CAMERA_UP;
+	p->fov_deg = RT_CAMERA_FOV;
+}
+
+int camera_init(struct camera *c, const struct camera_params *p, int size, struct diag *d)
+{
+	const double pi = 3.14159265358979323846;
+	struct vec3 view = vec3_sub(p->look, p->eye);
+	struct vec3 right;
+	double view_len = vec3_length(view), up_len = vec3_length(p->up);
+
+	if (!vec3_is_finite(p->eye) || !vec3_is_finite(p->look) || !vec3_is_finite(p->up) ||
+	    !isfinite(view_len) || !isfinite(up_len))
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "camera vectors must be finite");
+	if (!(view_len > 0.0))
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "the eye is at the look-at point");
+	if (!(up_len > 0.0))
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "the up vector is zero");
+	if (!(p->fov_deg > 0.0 && p->fov_deg < 180.0))
+		return diag_set(d, RT_E_INVALID, "", 0, 0,
+				"the field of view must be between 0 and 180 degrees, found %g",
+				p->fov_deg);
+	if (size < 1)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "the image size must be >= 1");
+	c->forward = vec3_scale(view, 1.0 / view_len);
+	right = vec3_cross(c->forward, vec3_scale(p->up, 1.0 / up_len));
+	/* sin of the angle between view and up: parallel within ~0.06 degrees
+	 * leaves no usable image orientation. */
+	if (vec3_length(right) < 1e-3)
+		return diag_set(d, RT_E_INVALID, "", 0, 0,
+				"the up vector is parallel to the viewing direction");
+	c->right = vec3_normalize(right);
+	c->up = vec3_cross(c->right, c->forward);
+	c->eye = p->eye;
+	c->half_height = tan(p->fov_deg * pi / 360.0);
+	c->size = size;
+	return 0;
+}
+
+struct ray camera_ray(const struct camera *c, int px, int py)
+{
+	double scale = 2.0 * c->half_height / c->size;
+	double u = (px + 0.5) * scale - c->half_height;
+	double v = c->half_height - (py + 0.5) * scale;
+	struct ray r;
+
+	r.origin = c->eye;
+	r.dir = vec3_normalize(vec3_add(c->forward,
+					vec3_add(vec3_scale(c->right, u), vec3_scale(c->up, v))));
+	return r;
+}

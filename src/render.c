@@ -1,0 +1,210 @@
+/* The shading model of scene-format.md (ambient, diffuse, tinted specular,
+ * coloured point lights with shadows, recursive reflection, clamping) and
+ * the image loop, whose threads take rows from a shared counter. */
+#include <errno.h>
+#include <pthread.h>
+#include <string.h>
+
+#include "accel.h"
+#include "render.h"
+
+/* The offset for rays leaving a surface at p: relative to the size of the
+ * coordinates, so that it stays above their rounding error (no acne) and
+ * far below anything visible (no leaks). */
+static double render_offset(struct vec3 p)
+{
+	double m = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+	return RT_EPSILON * fmax(1.0, m);
+}
+
+static bool render_shadowed(const struct scene *s, struct vec3 p, struct vec3 l,
+			    double dist, double eps)
+{
+	struct ray shadow;
+
+	shadow.origin = vec3_add_scaled(p, l, eps);
+	shadow.dir = l;
+	/* Only blockers nearer than the light count. */
+	return accel_occluded(s->accel, &shadow, eps, dist - eps);
+}
+
+struct color render_trace(const struct scene *s, const struct render_settings *rs,
+			  const struct ray *r, int level, struct ray_counts *counts)
+{
+	double t = INFINITY, eps = render_offset(r->origin);
+	const struct shape *hit = accel_intersect(s->accel, r, eps, &t);
+	const struct material *m;
+	struct vec3 p, n, refl;
+	struct color base, c;
+	double dn;
+	size_t i;
+
+	if (!hit)
+		return color_make(0.0, 0.0, 0.0);
+	m = &hit->mat;
+	p = ray_at(r, t);
+	base = shape_color_at(hit, p);
+	c = color_scale(base, m->ka);
+	n = shape_normal(hit, p);
+	dn = vec3_dot(r->dir, n);
+	if (dn > 0.0) {
+		n = vec3_neg(n);
+		dn = -dn;
+	}
+	refl = vec3_add_scaled(r->dir, n, -2.0 * dn);
+	eps = render_offset(p);
+	for (i = 0; i < s->n_lights; i++) {
+		const struct light *light = &s->lights[i];
+		struct vec3 to_light = vec3_sub(light->pos, p);
+		double dist = vec3_length(to_light), nl, rl, k;
+		struct vec3 l;
+
+		if (!(dist > eps))
+			continue;
+		l = vec3_scale(to_light, 1.0 / dist);
+		nl = vec3_dot(n, l);
+		if (nl <= 0.0)
+			continue;
+		if (counts)
+			counts->shadow++;
+		if (render_shadowed(s, p, l, dist, eps))
+			continue;
+		k = m->kd * nl;
+		rl = vec3_dot(refl, l);
+		if (rl > 0.0)
+			k += m->ks * pow(rl, m->shininess);
+		c = color_add(c, color_scale(color_mul(light->color, base), k));
+	}
+	if (level < rs->recursion && m->kr > 0.0) {
+		struct ray bounce;
+		struct color reflected;
+
+		bounce.origin = vec3_add_scaled(p, refl, eps);
+		bounce.dir = refl;
+		if (counts)
+			counts->reflection++;
+		reflected = render_trace(s, rs, &bounce, level + 1, counts);
+		c = color_add(c, color_scale(reflected, m->kr));
+	}
+	return rs->clamp == RT_CLAMP_LEVEL ? color_clamp(c) : c;
+}
+
+void render_color_to_rgb8(struct color c, uint8_t out[3])
+{
+	c = color_clamp(c);
+	out[0] = (uint8_t)lround(255.0 * c.r);
+	out[1] = (uint8_t)lround(255.0 * c.g);
+	out[2] = (uint8_t)lround(255.0 * c.b);
+}
+
+struct render_shared {
+	const struct render_job *job;
+	struct image *img;
+	long next_row;		/* taken with an atomic add */
+	long rows_done;
+};
+
+#define RENDER_MAX_THREADS 64
+
+struct render_worker {
+	struct render_shared *shared;
+	struct ray_counts counts;
+	pthread_t thread;
+};
+
+static bool render_cancelled(const struct render_job *job)
+{
+	return job->cancel && *job->cancel;
+}
+
+static void render_row(const struct render_job *job, struct image *img, int y,
+		       struct ray_counts *counts)
+{
+	uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
+	int x;
+
+	for (x = job->x0; x < job->x1; x++) {
+		struct ray r = camera_ray(job->camera, x, y);
+		struct color c;
+		counts->primary++;
+		c = render_trace(job->scene, &job->settings, &r, 1, counts);
+		render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
+	}
+}
+
+/* Renders rows until none are left or the job is cancelled; only the
+ * calling thread reports progress. */
+static void render_take_rows(struct render_worker *w, bool report)
+{
+	struct render_shared *sh = w->shared;
+	const struct render_job *job = sh->job;
+	long rows = job->y1 - job->y0;
+
+	while (!render_cancelled(job)) {
+		long y = __atomic_fetch_add(&sh->next_row, 1, __ATOMIC_RELAXED);
+		long done;
+		if (y >= rows)
+			break;
+		render_row(job, sh->img, job->y0 + (int)y, &w->counts);
+		done = __atomic_add_fetch(&sh->rows_done, 1, __ATOMIC_RELAXED);
+		if (report && job->progress)
+			job->progress(job->progress_ctx, done, rows);
+	}
+}
+
+static void *render_worker_main(void *arg)
+{
+	render_take_rows(arg, false);
+	return NULL;
+}
+
+int render_image(const struct render_job *job, struct image *img,
+		 struct ray_counts *counts, struct diag *d)
+{
+	struct render_worker workers[RENDER_MAX_THREADS];
+	struct render_shared shared;
+	int threads = job->threads, started = 0, i;
+	long rows = job->y1 - job->y0;
+
+	if (!job->scene->accel)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "the scene was not prepared");
+	if (job->x0 < 0 || job->y0 < 0 || job->x1 > job->camera->size || job->y1 > job->camera->size ||
+	    job->x0 >= job->x1 || job->y0 >= job->y1 ||
+	    img->width != job->x1 - job->x0 || img->height != job->y1 - job->y0)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "bad render region");
+	if (threads < 1)
+		threads = 1;
+	if (threads > RENDER_MAX_THREADS)
+		threads = RENDER_MAX_THREADS;
+	if (threads > rows)
+		threads = (int)rows;
+	memset(&shared, 0, sizeof(shared));
+	shared.job = job;
+	shared.img = img;
+	for (i = 0; i < threads; i++) {
+		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
+		workers[i].shared = &shared;
+	}
+	/* The calling thread is worker 0; the others are started here. */
+	for (i = 1; i < threads; i++) {
+		if (pthread_create(&workers[i].thread, NULL, render_worker_main, &workers[i]) != 0)
+			break;
+		started++;
+	}
+	render_take_rows(&workers[0], true);
+	for (i = 1; i <= started; i++)
+		pthread_join(workers[i].thread, NULL);
+	if (job->progress)
+		job->progress(job->progress_ctx, shared.rows_done, rows);
+	if (counts) {
+		memset(counts, 0, sizeof(*counts));
+		for (i = 0; i <= started; i++) {
+			counts->primary += workers[i].counts.primary;
+			counts->shadow += workers[i].counts.shadow;
+			counts->reflection += workers[i].counts.reflection;
+		}
+	}
+	if (render_cancelled(job))
+		return diag_set(d, RT_E_INTERRUPTED, "", 0, 0, "interrupted");
+	return 0;
+}
