@@ -26,11 +26,19 @@ LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
 SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
 TEST_SRC := $(wildcard tests/test_*.c) $(wildcard tests/shapes/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/san/tests/%)
-TOOL_SRC := tests/tools/imgcmp.c
-EXPORT_SRC := $(wildcard pov_export/*.c)
 
-.PHONY: all render check unit clitest valgrind povcheck deps check-deps install clean bench
-all: $(BUILD)/libwhitted.a $(BUILD)/whitted $(if $(EXPORT_SRC),$(BUILD)/scene2pov)
+# Each part of the project adds its own targets in mk/NAME.mk: programs to
+# ALL_TARGETS, Debian packages to CHECK_PKGS, and the test targets that
+# `make check` runs, in order, to CHECK_TARGETS.
+ALL_TARGETS := $(BUILD)/libwhitted.a $(BUILD)/whitted
+INSTALL_PROGRAMS := whitted
+CHECK_TARGETS := unit clitest valgrind
+
+.PHONY: all render check unit clitest valgrind deps check-deps install clean
+all: build-all
+-include mk/*.mk
+.PHONY: build-all
+build-all: $(ALL_TARGETS)
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
@@ -54,15 +62,9 @@ $(BUILD)/whitted: $(BUILD)/src/main.o $(BUILD)/libwhitted.a
 $(BUILD)/san/whitted: $(BUILD)/san/src/main.o $(BUILD)/san/libwhitted.a
 	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/scene2pov: $(EXPORT_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted.a
-	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
-
 $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/tests/support.o $(BUILD)/san/libwhitted.a
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ -lcmocka $(LDLIBS)
-
-$(BUILD)/imgcmp: $(BUILD)/tests/tools/imgcmp.o
-	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
 
 deps:
 	@scripts/deps.sh $(CHECK_PKGS)
@@ -70,7 +72,8 @@ deps:
 check-deps:
 	@scripts/deps.sh $(CHECK_PKGS)
 
-render: check-deps
+render:
+	@scripts/deps.sh $(CORE_PKGS)
 	@$(MAKE) --no-print-directory all
 	@mkdir -p out
 	$(BUILD)/whitted -o out/scene.png scenes/scene.txt
@@ -79,25 +82,20 @@ render: check-deps
 unit: $(TEST_BIN)
 	@tests/run-unit.sh $(TEST_BIN)
 
-clitest: all $(BUILD)/imgcmp
+clitest: all
 	@tests/cli/run.sh
 
 valgrind: all
 	@tests/valgrind.sh
 
-povcheck: all $(BUILD)/imgcmp
-	@tests/povcheck.sh
-
 check: check-deps
-	@$(MAKE) --no-print-directory all $(TEST_BIN) $(BUILD)/imgcmp
-	@$(MAKE) --no-print-directory unit clitest valgrind
-	@if command -v povray >/dev/null 2>&1; then $(MAKE) --no-print-directory povcheck; \
-	else echo "povcheck: NOT RUN: POV-Ray is not installed (apt-get install povray)"; fi
+	@$(MAKE) --no-print-directory all $(TEST_BIN)
+	@for t in $(CHECK_TARGETS); do $(MAKE) --no-print-directory $$t || exit 1; done
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/whitted
 	install -m 755 $(BUILD)/whitted $(DESTDIR)$(PREFIX)/bin/whitted
-	$(if $(EXPORT_SRC),install -m 755 $(BUILD)/scene2pov $(DESTDIR)$(PREFIX)/bin/scene2pov)
+	for p in $(INSTALL_PROGRAMS); do install -m 755 $(BUILD)/$$p $(DESTDIR)$(PREFIX)/bin/$$p; done
 	install -m 644 $(BUILD)/libwhitted.a $(DESTDIR)$(PREFIX)/lib/libwhitted.a
 	cp -R include/. $(DESTDIR)$(PREFIX)/include/whitted/
 
