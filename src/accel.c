@@ -1,8 +1,11 @@
 /* A bounding volume hierarchy over the scene's bounded shapes, built top
  * down with a 16-bin surface area heuristic, plus a list of the unbounded
- * shapes that every ray tests.  Nodes are 32 bytes: float bounds rounded
- * outwards, so the boxes never cut off a hit, and either a leaf's range of
- * shapes or an interior node's second child (the first follows it). */
+ * shapes that every ray tests.  A node is one 64-byte cache line holding
+ * the boxes of both its children (float bounds rounded outwards, so they
+ * never cut off a hit, stored child-interleaved so that one SSE2 operation
+ * works on both) and what each child is: another node or a leaf's range of
+ * shapes.  Traversal visits children nearest entry first, in the same order
+ * as a one-box-per-node tree would, so equal-distance hits resolve alike. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -13,17 +16,29 @@
 #include "alloc.h"
 #include "scene.h"
 
+#ifndef ACCEL_BINS
 #define ACCEL_BINS 16
+#endif
+#ifndef ACCEL_LEAF_MAX
 #define ACCEL_LEAF_MAX 4
+#endif
+#ifndef ACCEL_TRAV_COST
+#define ACCEL_TRAV_COST 0.0
+#endif
 #define ACCEL_STACK 128
 /* Past this depth the build splits at the median, so the depth (and the
  * traversal stack) stays bounded whatever the input. */
 #define ACCEL_SAH_DEPTH 40
 
+/* The child slot word: a node index, or ACCEL_LEAF plus the first of the
+ * leaf's `count` shapes in accel.bounded. */
+#define ACCEL_LEAF 0x80000000u
+
 struct bvh_node {
-	float lo[3], hi[3];
-	uint32_t index;		/* leaf: first shape; interior: second child */
-	uint32_t count;		/* leaf: number of shapes; interior: 0 */
+	/* bounds[side][axis][child]: side 0 the minimum, 1 the maximum. */
+	float bounds[2][3][2];
+	uint32_t child[2];
+	uint32_t count[2];	/* shapes in a leaf child; 0 for a node */
 };
 
 struct accel {
@@ -84,7 +99,7 @@ static int bin_of(double c, double lo, double scale)
 static bool sah_split(const struct build_ref *refs, size_t n, struct aabb box,
 		      struct aabb centres, int *out_axis, double *out_pos)
 {
-	double best = (double)n * aabb_area(box);
+	double best = ((double)n - ACCEL_TRAV_COST) * aabb_area(box);
 	bool found = false;
 	int axis;
 
@@ -193,7 +208,10 @@ static int push_node(struct build *b, size_t *index)
 {
 	if (b->n_nodes == b->cap_nodes) {
 		size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
-		struct bvh_node *p = rt_reallocarray(b->nodes, cap, sizeof(*p));
+		struct bvh_node *p;
+		if (cap > ACCEL_LEAF)
+			return -RT_E_NOMEM;
+		p = rt_reallocarray(b->nodes, cap, sizeof(*p));
 		if (!p)
 			return -RT_E_NOMEM;
 		b->nodes = p;
@@ -203,41 +221,84 @@ static int push_node(struct build *b, size_t *index)
 	return 0;
 }
 
-static void set_node_box(struct bvh_node *node, struct aabb box)
+static void set_child_box(struct bvh_node *node, int c, struct aabb box)
 {
 	int k;
 
 	for (k = 0; k < 3; k++) {
-		node->lo[k] = float_down(vec3_component(box.min, k));
-		node->hi[k] = float_up(vec3_component(box.max, k));
+		node->bounds[0][k][c] = float_down(vec3_component(box.min, k));
+		node->bounds[1][k][c] = float_up(vec3_component(box.max, k));
 	}
 }
 
-static int build_node(struct build *b, size_t first, size_t n, int depth)
+/* Where to split refs[first, first + n) (sorting them so), or 0 to make
+ * them a leaf; *box receives their bounds. */
+static size_t choose_split(struct build *b, size_t first, size_t n, int depth, struct aabb *box)
 {
 	struct build_ref *refs = b->refs + first;
-	struct aabb centres, box = refs_bounds(refs, n, &centres);
-	size_t index, split = 0;
+	struct aabb centres;
+	size_t split = 0;
 	double pos = 0.0;
-	int axis = 0, rc;
+	int axis = 0;
 
-	if ((rc = push_node(b, &index)) < 0)
-		return rc;
-	set_node_box(&b->nodes[index], box);
-	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, box, centres, &axis, &pos))
+	*box = refs_bounds(refs, n, &centres);
+	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, *box, centres, &axis, &pos))
 		split = partition(refs, n, axis, pos);
 	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX)
 		split = median_split(refs, n, centres);
-	if (split == 0 || split == n) {
-		b->nodes[index].index = (uint32_t)first;
-		b->nodes[index].count = (uint32_t)n;
+	return split == n ? 0 : split;
+}
+
+/* Builds the subtree over refs[first, first + n) and describes it as child
+ * c of node `parent`: its box, and a leaf or the node built for it. */
+static int build_node(struct build *b, size_t parent, int c, size_t first, size_t n, int depth)
+{
+	struct aabb box;
+	size_t index, split = choose_split(b, first, n, depth, &box);
+	int rc;
+
+	set_child_box(&b->nodes[parent], c, box);
+	if (split == 0) {
+		b->nodes[parent].child[c] = ACCEL_LEAF | (uint32_t)first;
+		b->nodes[parent].count[c] = (uint32_t)n;
 		return 0;
 	}
-	b->nodes[index].count = 0;
-	if ((rc = build_node(b, first, split, depth + 1)) < 0)
+	if ((rc = push_node(b, &index)) < 0)
 		return rc;
-	b->nodes[index].index = (uint32_t)b->n_nodes;
-	return build_node(b, first + split, n - split, depth + 1);
+	b->nodes[parent].child[c] = (uint32_t)index;
+	b->nodes[parent].count[c] = 0;
+	if ((rc = build_node(b, index, 0, first, split, depth + 1)) < 0)
+		return rc;
+	return build_node(b, index, 1, first + split, n - split, depth + 1);
+}
+
+/* The root node holds the two halves of the whole set; a set that makes
+ * one leaf sits beside an empty child whose box no ray can enter (its
+ * minimum is +inf and its maximum -inf on every axis). */
+static int build_root(struct build *b, size_t n)
+{
+	struct aabb box;
+	size_t root, split;
+	int rc, k;
+
+	if ((rc = push_node(b, &root)) < 0)
+		return rc;
+	split = choose_split(b, 0, n, 0, &box);
+	if (split == 0) {
+		set_child_box(&b->nodes[root], 0, box);
+		b->nodes[root].child[0] = ACCEL_LEAF;
+		b->nodes[root].count[0] = (uint32_t)n;
+		for (k = 0; k < 3; k++) {
+			b->nodes[root].bounds[0][k][1] = INFINITY;
+			b->nodes[root].bounds[1][k][1] = -INFINITY;
+		}
+		b->nodes[root].child[1] = ACCEL_LEAF;
+		b->nodes[root].count[1] = 0;
+		return 0;
+	}
+	if ((rc = build_node(b, root, 0, 0, split, 1)) < 0)
+		return rc;
+	return build_node(b, root, 1, split, n - split, 1);
 }
 
 int accel_build(const struct scene *s, struct accel **out, struct diag *d)
@@ -267,7 +328,7 @@ int accel_build(const struct scene *s, struct accel **out, struct diag *d)
 		}
 	}
 	if (a->n_bounded > 0) {
-		if ((rc = build_node(&b, 0, a->n_bounded, 0)) < 0)
+		if ((rc = build_root(&b, a->n_bounded)) < 0)
 			goto out_free;
 		for (i = 0; i < a->n_bounded; i++)
 			a->bounded[i] = b.refs[i].shape;
@@ -296,53 +357,137 @@ void accel_destroy(struct accel *a)
 	rt_free(a);
 }
 
+/* What the box tests need of a ray, computed once per ray: the reciprocal
+ * direction, and for each axis which side of a box the ray meets first, so
+ * that the test needs no swap and no branch per axis. */
 struct ray_slab {
 	double o[3], inv[3];
+	int near[3];		/* 0: the minimum is the near plane; 1: the maximum */
 };
 
-static void ray_slab_init(struct ray_slab *rs, const struct ray *r)
+static inline void ray_slab_init(struct ray_slab *rs, const struct ray *r)
 {
+	int k;
+
 	rs->o[0] = r->origin.x;
 	rs->o[1] = r->origin.y;
 	rs->o[2] = r->origin.z;
 	rs->inv[0] = 1.0 / r->dir.x;
 	rs->inv[1] = 1.0 / r->dir.y;
 	rs->inv[2] = 1.0 / r->dir.z;
+	/* 1 / -0 is -inf: a direction of -0 counts as negative, as it must. */
+	for (k = 0; k < 3; k++)
+		rs->near[k] = rs->inv[k] < 0.0;
 }
 
-/* The entry distance of the ray into the node's box within (t_min, t_max),
- * or INFINITY when it misses.  A NaN from 0 * inf (the origin on a slab
- * plane of a parallel ray) fails neither comparison and so constrains
- * nothing. */
-static double node_entry(const struct bvh_node *node, const struct ray_slab *rs,
-			 double t_min, double t_max)
-{
-	int k;
+/* The entry distances of the ray into a node's two child boxes within
+ * (t_min, t_max), INFINITY for a child it misses:
+ *   entry = max(t_min, (near_k - o_k) / d_k),  exit = min(t_max, (far_k - o_k) / d_k).
+ * A NaN from 0 * inf (the origin on a slab plane of a parallel ray) fails
+ * the comparisons and so constrains nothing; SSE2's max and min return
+ * their second operand for a NaN, which is the same rule. */
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+#include <emmintrin.h>
 
-	for (k = 0; k < 3; k++) {
-		double t0 = (node->lo[k] - rs->o[k]) * rs->inv[k];
-		double t1 = (node->hi[k] - rs->o[k]) * rs->inv[k];
-		if (t0 > t1) {
-			double tmp = t0;
-			t0 = t1;
-			t1 = tmp;
+struct ray_slab_sse {
+	__m128d o[3], inv[3];
+	int near_off[3], far_off[3];	/* float offsets into bvh_node.bounds */
+};
+
+static inline void ray_slab_sse_init(struct ray_slab_sse *v, const struct ray_slab *rs)
+{
+	v->o[0] = _mm_set1_pd(rs->o[0]);
+	v->o[1] = _mm_set1_pd(rs->o[1]);
+	v->o[2] = _mm_set1_pd(rs->o[2]);
+	v->inv[0] = _mm_set1_pd(rs->inv[0]);
+	v->inv[1] = _mm_set1_pd(rs->inv[1]);
+	v->inv[2] = _mm_set1_pd(rs->inv[2]);
+	v->near_off[0] = rs->near[0] * 6;
+	v->near_off[1] = rs->near[1] * 6 + 2;
+	v->near_off[2] = rs->near[2] * 6 + 4;
+	v->far_off[0] = 6 - rs->near[0] * 6;
+	v->far_off[1] = 8 - rs->near[1] * 6;
+	v->far_off[2] = 10 - rs->near[2] * 6;
+}
+
+static inline __m128d load_pair(const float *p)
+{
+	return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)(const void *)p)));
+}
+
+static inline __m128d slab_t(const float *b, int off, __m128d o, __m128d inv)
+{
+	return _mm_mul_pd(_mm_sub_pd(load_pair(b + off), o), inv);
+}
+
+static inline void node_entries(const struct bvh_node *node, const struct ray_slab_sse *v,
+				double t_min, double t_max, double entry[2])
+{
+	const float *b = &node->bounds[0][0][0];
+	__m128d lo = _mm_set1_pd(t_min), hi = _mm_set1_pd(t_max), miss;
+
+	lo = _mm_max_pd(slab_t(b, v->near_off[0], v->o[0], v->inv[0]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[0], v->o[0], v->inv[0]), hi);
+	lo = _mm_max_pd(slab_t(b, v->near_off[1], v->o[1], v->inv[1]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[1], v->o[1], v->inv[1]), hi);
+	lo = _mm_max_pd(slab_t(b, v->near_off[2], v->o[2], v->inv[2]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[2], v->o[2], v->inv[2]), hi);
+	/* A miss where not (lo <= hi). */
+	miss = _mm_cmpnle_pd(lo, hi);
+	lo = _mm_or_pd(_mm_and_pd(miss, _mm_set1_pd(INFINITY)), _mm_andnot_pd(miss, lo));
+	_mm_storeu_pd(entry, lo);
+}
+#else
+struct ray_slab_sse {
+	struct ray_slab rs;
+};
+
+static inline void ray_slab_sse_init(struct ray_slab_sse *v, const struct ray_slab *rs)
+{
+	v->rs = *rs;
+}
+
+static inline void node_entries(const struct bvh_node *node, const struct ray_slab_sse *v,
+				double t_min, double t_max, double entry[2])
+{
+	const struct ray_slab *rs = &v->rs;
+	int c, k;
+
+	for (c = 0; c < 2; c++) {
+		double lo = t_min, hi = t_max;
+		for (k = 0; k < 3; k++) {
+			double t0 = (node->bounds[rs->near[k]][k][c] - rs->o[k]) * rs->inv[k];
+			double t1 = (node->bounds[1 - rs->near[k]][k][c] - rs->o[k]) * rs->inv[k];
+			lo = t0 > lo ? t0 : lo;
+			hi = t1 < hi ? t1 : hi;
 		}
-		if (t0 > t_min)
-			t_min = t0;
-		if (t1 < t_max)
-			t_max = t1;
-		if (t_min > t_max)
-			return INFINITY;
+		entry[c] = lo <= hi ? lo : INFINITY;
 	}
-	return t_min;
+}
+#endif
+
+/* Tests the shapes of leaf slot `child` (count of them) for the nearest hit. */
+static inline const struct shape *leaf_intersect(const struct accel *a, uint32_t child,
+						 uint32_t count, const struct ray *r,
+						 double t_min, double *t_max, const struct shape *hit)
+{
+	const struct shape *const *sh = a->bounded + (child & ~ACCEL_LEAF);
+	uint32_t k;
+
+	for (k = 0; k < count; k++)
+		if (shape_intersect(sh[k], r, t_min, t_max))
+			hit = sh[k];
+	return hit;
 }
 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 				    double t_min, double *t_max)
 {
 	const struct shape *hit = NULL;
-	struct { uint32_t node; double entry; } stack[ACCEL_STACK];
+	struct { uint32_t child, count; double entry; } stack[ACCEL_STACK];
 	struct ray_slab rs;
+	struct ray_slab_sse v;
+	uint32_t node = 0;
 	size_t i;
 	int top = 0;
 
@@ -352,52 +497,52 @@ const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 	if (a->n_nodes == 0)
 		return hit;
 	ray_slab_init(&rs, r);
-	stack[0].node = 0;
-	stack[0].entry = node_entry(&a->nodes[0], &rs, t_min, *t_max);
-	top = stack[0].entry == INFINITY ? 0 : 1;
-	while (top > 0) {
-		const struct bvh_node *node;
-		top--;
-		/* A nearer hit found since the push may have passed this node. */
-		if (stack[top].entry > *t_max)
-			continue;
-		node = &a->nodes[stack[top].node];
-		if (node->count > 0) {
-			uint32_t k;
-			for (k = 0; k < node->count; k++) {
-				const struct shape *sh = a->bounded[node->index + k];
-				if (shape_intersect(sh, r, t_min, t_max))
-					hit = sh;
-			}
-		} else {
-			uint32_t near = (uint32_t)(node - a->nodes) + 1, far = node->index;
-			double t_near = node_entry(&a->nodes[near], &rs, t_min, *t_max);
-			double t_far = node_entry(&a->nodes[far], &rs, t_min, *t_max);
-			if (t_far < t_near) {
-				double tt = t_near;
-				uint32_t tmp = near;
-				near = far;
-				far = tmp;
-				t_near = t_far;
-				t_far = tt;
-			}
-			if (t_far != INFINITY) {
-				stack[top].node = far;
-				stack[top++].entry = t_far;
-			}
-			if (t_near != INFINITY) {
-				stack[top].node = near;
-				stack[top++].entry = t_near;
-			}
+	ray_slab_sse_init(&v, &rs);
+	for (;;) {
+		const struct bvh_node *n = &a->nodes[node];
+		double e[2];
+		int near = 0, far = 1;
+
+		node_entries(n, &v, t_min, *t_max, e);
+		if (e[1] < e[0]) {
+			near = 1;
+			far = 0;
 		}
+		if (e[near] != INFINITY) {
+			/* The farther child waits on the stack; the nearer one is
+			 * entered now, a leaf's shapes tested at once. */
+			if (e[far] != INFINITY) {
+				stack[top].child = n->child[far];
+				stack[top].count = n->count[far];
+				stack[top++].entry = e[far];
+			}
+			if (!(n->child[near] & ACCEL_LEAF)) {
+				node = n->child[near];
+				continue;
+			}
+			hit = leaf_intersect(a, n->child[near], n->count[near], r, t_min, t_max, hit);
+		}
+		/* Back up to the nearest waiting child that a hit found since has
+		 * not ruled out. */
+		for (;;) {
+			if (top == 0)
+				return hit;
+			top--;
+			if (stack[top].entry > *t_max)
+				continue;
+			if (!(stack[top].child & ACCEL_LEAF))
+				break;
+			hit = leaf_intersect(a, stack[top].child, stack[top].count, r, t_min, t_max, hit);
+		}
+		node = stack[top].child;
 	}
-	return hit;
 }
 
 bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
 {
 	uint32_t stack[ACCEL_STACK];
 	struct ray_slab rs;
+	struct ray_slab_sse v;
 	size_t i;
 	int top = 0;
 
@@ -409,21 +554,30 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 	if (a->n_nodes == 0)
 		return false;
 	ray_slab_init(&rs, r);
+	ray_slab_sse_init(&v, &rs);
 	stack[top++] = 0;
 	while (top > 0) {
-		const struct bvh_node *node = &a->nodes[stack[--top]];
-		if (node_entry(node, &rs, t_min, t_max) == INFINITY)
-			continue;
-		if (node->count > 0) {
-			uint32_t k;
-			for (k = 0; k < node->count; k++) {
-				double t = t_max;
-				if (shape_intersect(a->bounded[node->index + k], r, t_min, &t))
-					return true;
+		const struct bvh_node *n = &a->nodes[stack[--top]];
+		double e[2];
+		int c;
+
+		node_entries(n, &v, t_min, t_max, e);
+		/* Any blocker will do, so leaves are tested as they are met and
+		 * only nodes wait on the stack. */
+		for (c = 0; c < 2; c++) {
+			if (e[c] == INFINITY)
+				continue;
+			if (n->child[c] & ACCEL_LEAF) {
+				const struct shape *const *sh = a->bounded + (n->child[c] & ~ACCEL_LEAF);
+				uint32_t k;
+				for (k = 0; k < n->count[c]; k++) {
+					double t = t_max;
+					if (shape_intersect(sh[k], r, t_min, &t))
+						return true;
+				}
+			} else {
+				stack[top++] = n->child[c];
 			}
-		} else {
-			stack[top++] = node->index;
-			stack[top++] = (uint32_t)(node - a->nodes) + 1;
 		}
 	}
 	return false;

@@ -13,8 +13,21 @@
  * far below anything visible (no leaks). */
 static double render_offset(struct vec3 p)
 {
-	double m = fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
-	return RT_EPSILON * fmax(1.0, m);
+	/* Comparisons rather than fmax, which is a library call here; the
+	 * same value for every non-NaN coordinate. */
+	double m = 1.0, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+
+	m = ax > m ? ax : m;
+	m = ay > m ? ay : m;
+	m = az > m ? az : m;
+	return RT_EPSILON * m;
+}
+
+/* rl^shininess.  pow is exact for an exponent of 1 (the floor's), so that
+ * common case skips the call without changing a bit. */
+static double render_specular_power(double rl, double shininess)
+{
+	return shininess == 1.0 ? rl : pow(rl, shininess);
 }
 
 static bool render_shadowed(const struct scene *s, struct vec3 p, struct vec3 l,
@@ -72,7 +85,7 @@ struct color render_trace(const struct scene *s, const struct render_settings *r
 		k = m->kd * nl;
 		rl = vec3_dot(refl, l);
 		if (rl > 0.0)
-			k += m->ks * pow(rl, m->shininess);
+			k += m->ks * render_specular_power(rl, m->shininess);
 		c = color_add(c, color_scale(color_mul(light->color, base), k));
 	}
 	if (level < rs->recursion && m->kr > 0.0) {
@@ -89,12 +102,27 @@ struct color render_trace(const struct scene *s, const struct render_settings *r
 	return rs->clamp == RT_CLAMP_LEVEL ? color_clamp(c) : c;
 }
 
+/* lround(255 c) for c in [0, 1], without the library call: v - trunc(v)
+ * is exact for v in [0, 255], so comparing it with 0.5 rounds half away
+ * from zero exactly as lround does.  NaN gives 0, as lround's result cast
+ * to a byte does. */
+static uint8_t render_channel(double c)
+{
+	double v = 255.0 * c;
+	int i;
+
+	if (!(v > 0.0))
+		return 0;
+	i = (int)v;
+	return (uint8_t)(i + (v - (double)i >= 0.5));
+}
+
 void render_color_to_rgb8(struct color c, uint8_t out[3])
 {
 	c = color_clamp(c);
-	out[0] = (uint8_t)lround(255.0 * c.r);
-	out[1] = (uint8_t)lround(255.0 * c.g);
-	out[2] = (uint8_t)lround(255.0 * c.b);
+	out[0] = render_channel(c.r);
+	out[1] = render_channel(c.g);
+	out[2] = render_channel(c.b);
 }
 
 struct render_shared {

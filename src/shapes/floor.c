@@ -44,9 +44,13 @@ static struct color floor_color_at(const struct shape *s, struct vec3 p)
 	const struct floor *fl = (const struct floor *)s;
 	double i = floor((p.x + fl->half) / fl->tile);
 	double j = floor((p.y + fl->half) / fl->tile);
-	double parity = fmod(fabs(i + j), 2.0);
+	/* i + j is even when half of it is a whole number: the same test as
+	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
+	 * NaN, as there), without the library call. */
+	double half = 0.5 * fabs(i + j);
+	bool even = half == floor(half) && half != INFINITY;
 
-	return parity == 0.0 ? color_make(1.0, 1.0, 1.0) : color_make(0.0, 0.0, 0.0);
+	return even ? color_make(1.0, 1.0, 1.0) : color_make(0.0, 0.0, 0.0);
 }
 
 static bool floor_bounds(const struct shape *s, struct aabb *out)
