@@ -1,0 +1,117 @@
+#!/bin/sh
+# The benchmark behind `make bench`: whitted against POV-Ray 3.7 on the
+# course example at 1536x1536 and on generated scenes of 1k, 100k and 1M
+# small spheres and triangles at 512x512, both with 2 threads, runs
+# alternating between the two renderers; prints a Markdown table of medians.
+# It is a benchmark, not a test: it fails only when a program fails.
+#
+# Environment: RUNS (default 5; the 1M case does 3), THREADS (2),
+# BENCH_DIR (build/bench-out), POV_1M=1 to time POV-Ray on 1M primitives too,
+# POV_EXPORT (default build/scene2pov): the exporter, called as
+# "$POV_EXPORT --finish plain -s SIZE -o OUT.pov SCENE".
+set -eu
+
+BUILD=${BUILD:-build}
+DIR=${BENCH_DIR:-$BUILD/bench-out}
+RUNS=${RUNS:-5}
+THREADS=${THREADS:-2}
+WHITTED=$BUILD/whitted
+GEN=$BUILD/gen_scene
+POV_EXPORT=${POV_EXPORT:-$BUILD/scene2pov}
+mkdir -p "$DIR"
+
+have_pov=no
+if command -v povray >/dev/null 2>&1 && [ -x "$POV_EXPORT" ]; then
+	have_pov=yes
+fi
+
+# The generated scenes are made once and kept (the 1M file is 100 MB).
+for n in 1 1000 100000 1000000; do
+	[ -s "$DIR/gen$n.txt" ] || "$GEN" "$n" >"$DIR/gen$n.txt"
+done
+
+now() { date +%s.%N; }
+
+# run_timed OUT_PREFIX CMD...: wall seconds into OUT_PREFIX.t, peak KiB into
+# OUT_PREFIX.m, stderr into OUT_PREFIX.err.
+run_timed() {
+	rt_out=$1
+	shift
+	rt_t0=$(now)
+	/usr/bin/time -f %M -o "$rt_out.m" "$@" 2>"$rt_out.err" >/dev/null ||
+		{ echo "bench: failed: $*" >&2; cat "$rt_out.err" >&2; exit 1; }
+	rt_t1=$(now)
+	echo "$rt_t1 - $rt_t0" | bc -l >"$rt_out.t"
+}
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+# Rays traced, from whitted's --stats line "rays: A primary, B shadow, C reflection, ...".
+rays_of() { sed -n 's/^rays: *\([0-9]*\) primary, \([0-9]*\) shadow, \([0-9]*\) reflection.*/\1 \2 \3/p' "$1" | awk '{ print $1 + $2 + $3 }'; }
+render_time_of() { sed -n 's/.*render \([0-9.]*\) s.*/\1/p' "$1"; }
+
+# The memory of a one-object scene at the same size: what every run needs
+# (program, libraries, image buffer), subtracted for bytes per primitive.
+base_kib() {
+	run_timed "$DIR/base$1" "$WHITTED" -q -j "$THREADS" -s "$1" -o "$DIR/base.ppm" "$DIR/gen1.txt"
+	cat "$DIR/base$1.m"
+}
+
+# bench NAME SCENE SIZE PRIMITIVES RUNS POV(yes/no)
+bench() {
+	name=$1 scene=$2 size=$3 prims=$4 runs=$5 pov=$6
+	w="$DIR/$name.w" p="$DIR/$name.p"
+	rm -f "$w".times "$p".times "$w".mems "$w".rps
+	if [ "$pov" = yes ]; then
+		"$POV_EXPORT" --finish plain -q -s "$size" -o "$DIR/$name.pov" "$scene"
+	fi
+	i=0
+	while [ $i -lt "$runs" ]; do
+		run_timed "$w" "$WHITTED" -q --stats --progress never -j "$THREADS" -s "$size" \
+			-o "$DIR/$name.png" "$scene"
+		cat "$w.t" >>"$w.times"
+		cat "$w.m" >>"$w.mems"
+		echo "$(rays_of "$w.err") / $(render_time_of "$w.err") / 1000000" | bc -l >>"$w.rps"
+		if [ "$pov" = yes ]; then
+			run_timed "$p" povray +I"$DIR/$name.pov" +O"$DIR/$name.pov.png" +W"$size" +H"$size" \
+				+WT"$THREADS" -A -D +FN -V -GA
+			cat "$p.t" >>"$p.times"
+		fi
+		i=$((i + 1))
+	done
+	wt=$(median <"$w.times")
+	mem=$(median <"$w.mems")
+	rps=$(median <"$w.rps")
+	base=$(base_kib "$size")
+	if [ "$prims" -gt 1 ]; then
+		bpp=$(echo "($mem - $base) * 1024 / $prims" | bc)
+	else
+		bpp="-"
+	fi
+	if [ "$pov" = yes ]; then
+		pt=$(median <"$p.times")
+		ratio=$(printf '%.1f' "$(echo "$pt / $wt" | bc -l)")
+		pt=$(printf '%.3f' "$pt")
+	else
+		pt="not run" ratio="-"
+	fi
+	printf '| %s | %s | %s | %.3f | %s | %s | %.1f | %.1f | %s |\n' "$name" "$size" "$runs" \
+		"$wt" "$pt" "$ratio" "$rps" "$(echo "$mem / 1024" | bc -l)" "$bpp"
+	echo "$wt" >"$DIR/$name.median"
+}
+
+echo "whitted $("$WHITTED" --version | cut -d' ' -f2), $(nproc) cores ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1)), $THREADS threads each; POV-Ray: $( [ $have_pov = yes ] && povray --version 2>&1 | sed -n 's/^POV-Ray \([0-9.]*\).*/\1/p' | head -1 || echo "not run ($POV_EXPORT or povray missing)")"
+echo
+echo "| scene | size | runs | whitted s (median) | POV-Ray s (median) | POV/whitted | whitted M rays/s (render) | peak MiB | bytes/primitive beyond a 1-object scene |"
+echo "|---|---|---|---|---|---|---|---|---|"
+bench example scenes/scene.txt 1536 1 "$RUNS" "$have_pov"
+bench gen-1k "$DIR/gen1000.txt" 512 1000 "$RUNS" "$have_pov"
+bench gen-100k "$DIR/gen100000.txt" 512 100000 "$RUNS" "$have_pov"
+pov1m=no
+[ "${POV_1M:-0}" = 1 ] && pov1m=$have_pov
+runs1m=$RUNS
+[ "$runs1m" -gt 3 ] && runs1m=3
+bench gen-1M "$DIR/gen1000000.txt" 512 1000000 "$runs1m" "$pov1m"
+echo
+echo "whitted 1k -> 100k: $(printf '%.2f' "$(echo "$(cat "$DIR/gen-100k.median") / $(cat "$DIR/gen-1k.median")" | bc -l)")x the time"
+[ "$pov1m" = yes ] || echo "POV-Ray is not timed on 1M primitives (POV_1M=1 to do so)."
