@@ -6,6 +6,7 @@
 # It is a benchmark, not a test: it fails only when a program fails.
 #
 # Environment: RUNS (default 5; the 1M case does 3), THREADS (2),
+# CASES (default "example gen-1k gen-100k gen-1M"),
 # BENCH_DIR (build/bench-out), POV_1M=1 to time POV-Ray on 1M primitives too,
 # POV_EXPORT (default build/scene2pov): the exporter, called as
 # "$POV_EXPORT --finish plain -s SIZE -o OUT.pov SCENE".
@@ -98,20 +99,28 @@ bench() {
 	printf '| %s | %s | %s | %.3f | %s | %s | %.1f | %.1f | %s |\n' "$name" "$size" "$runs" \
 		"$wt" "$pt" "$ratio" "$rps" "$(echo "$mem / 1024" | bc -l)" "$bpp"
 	echo "$wt" >"$DIR/$name.median"
+	rm -f "$DIR/$name.png" "$DIR/$name.pov.png"
 }
 
 echo "whitted $("$WHITTED" --version | cut -d' ' -f2), $(nproc) cores ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1)), $THREADS threads each; POV-Ray: $( [ $have_pov = yes ] && povray --version 2>&1 | sed -n 's/^POV-Ray \([0-9.]*\).*/\1/p' | head -1 || echo "not run ($POV_EXPORT or povray missing)")"
 echo
 echo "| scene | size | runs | whitted s (median) | POV-Ray s (median) | POV/whitted | whitted M rays/s (render) | peak MiB | bytes/primitive beyond a 1-object scene |"
 echo "|---|---|---|---|---|---|---|---|---|"
-bench example scenes/scene.txt 1536 1 "$RUNS" "$have_pov"
-bench gen-1k "$DIR/gen1000.txt" 512 1000 "$RUNS" "$have_pov"
-bench gen-100k "$DIR/gen100000.txt" 512 100000 "$RUNS" "$have_pov"
 pov1m=no
 [ "${POV_1M:-0}" = 1 ] && pov1m=$have_pov
 runs1m=$RUNS
 [ "$runs1m" -gt 3 ] && runs1m=3
-bench gen-1M "$DIR/gen1000000.txt" 512 1000000 "$runs1m" "$pov1m"
+for c in ${CASES:-example gen-1k gen-100k gen-1M}; do
+	case $c in
+	example) bench example scenes/scene.txt 1536 1 "$RUNS" "$have_pov" ;;
+	gen-1k) bench gen-1k "$DIR/gen1000.txt" 512 1000 "$RUNS" "$have_pov" ;;
+	gen-100k) bench gen-100k "$DIR/gen100000.txt" 512 100000 "$RUNS" "$have_pov" ;;
+	gen-1M) bench gen-1M "$DIR/gen1000000.txt" 512 1000000 "$runs1m" "$pov1m" ;;
+	*) echo "bench: unknown case '$c'" >&2; exit 2 ;;
+	esac
+done
 echo
-echo "whitted 1k -> 100k: $(printf '%.2f' "$(echo "$(cat "$DIR/gen-100k.median") / $(cat "$DIR/gen-1k.median")" | bc -l)")x the time"
+if [ -s "$DIR/gen-100k.median" ] && [ -s "$DIR/gen-1k.median" ]; then
+	echo "whitted 1k -> 100k: $(printf '%.2f' "$(echo "$(cat "$DIR/gen-100k.median") / $(cat "$DIR/gen-1k.median")" | bc -l)")x the time"
+fi
 [ "$pov1m" = yes ] || echo "POV-Ray is not timed on 1M primitives (POV_1M=1 to do so)."
