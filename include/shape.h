@@ -59,7 +59,13 @@ static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
 	return s->ops->normal(s, p);
 }
 
-struct color shape_color_at(const struct shape *s, struct vec3 p);
+/* Inline, as it runs at every hit; the default for a NULL color_at is
+ * still written only here. */
+static inline struct color shape_color_at(const struct shape *s, struct vec3 p)
+{
+	return s->ops->color_at ? s->ops->color_at(s, p) : s->mat.color;
+}
+
 bool shape_bounds(const struct shape *s, struct aabb *out);
 const char *shape_degenerate(const struct shape *s);
 int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt);

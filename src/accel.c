@@ -437,6 +437,22 @@ static inline void node_entries(const struct bvh_node *node, const struct ray_sl
 	lo = _mm_or_pd(_mm_and_pd(miss, _mm_set1_pd(INFINITY)), _mm_andnot_pd(miss, lo));
 	_mm_storeu_pd(entry, lo);
 }
+
+/* Bit c set when the ray enters child c's box within (t_min, t_max). */
+static inline int node_hits(const struct bvh_node *node, const struct ray_slab_sse *v,
+			    double t_min, double t_max)
+{
+	const float *b = &node->bounds[0][0][0];
+	__m128d lo = _mm_set1_pd(t_min), hi = _mm_set1_pd(t_max);
+
+	lo = _mm_max_pd(slab_t(b, v->near_off[0], v->o[0], v->inv[0]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[0], v->o[0], v->inv[0]), hi);
+	lo = _mm_max_pd(slab_t(b, v->near_off[1], v->o[1], v->inv[1]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[1], v->o[1], v->inv[1]), hi);
+	lo = _mm_max_pd(slab_t(b, v->near_off[2], v->o[2], v->inv[2]), lo);
+	hi = _mm_min_pd(slab_t(b, v->far_off[2], v->o[2], v->inv[2]), hi);
+	return _mm_movemask_pd(_mm_cmple_pd(lo, hi));
+}
 #else
 struct ray_slab_sse {
 	struct ray_slab rs;
@@ -463,6 +479,15 @@ static inline void node_entries(const struct bvh_node *node, const struct ray_sl
 		}
 		entry[c] = lo <= hi ? lo : INFINITY;
 	}
+}
+
+static inline int node_hits(const struct bvh_node *node, const struct ray_slab_sse *v,
+			    double t_min, double t_max)
+{
+	double e[2];
+
+	node_entries(node, v, t_min, t_max, e);
+	return (e[0] != INFINITY) | (e[1] != INFINITY) << 1;
 }
 #endif
 
@@ -558,14 +583,12 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 	stack[top++] = 0;
 	while (top > 0) {
 		const struct bvh_node *n = &a->nodes[stack[--top]];
-		double e[2];
-		int c;
+		int hits = node_hits(n, &v, t_min, t_max), c;
 
-		node_entries(n, &v, t_min, t_max, e);
 		/* Any blocker will do, so leaves are tested as they are met and
 		 * only nodes wait on the stack. */
 		for (c = 0; c < 2; c++) {
-			if (e[c] == INFINITY)
+			if (!(hits & (1 << c)))
 				continue;
 			if (n->child[c] & ACCEL_LEAF) {
 				const struct shape *const *sh = a->bounded + (n->child[c] & ~ACCEL_LEAF);
