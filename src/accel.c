@@ -16,15 +16,8 @@
 #include "alloc.h"
 #include "scene.h"
 
-#ifndef ACCEL_BINS
 #define ACCEL_BINS 16
-#endif
-#ifndef ACCEL_LEAF_MAX
 #define ACCEL_LEAF_MAX 4
-#endif
-#ifndef ACCEL_TRAV_COST
-#define ACCEL_TRAV_COST 0.0
-#endif
 #define ACCEL_STACK 128
 /* Past this depth the build splits at the median, so the depth (and the
  * traversal stack) stays bounded whatever the input. */
@@ -50,9 +43,12 @@ struct accel {
 	size_t n_unbounded;
 };
 
+/* A shape being sorted into the tree: its box and the shape.  The centre
+ * that the heuristic sorts by is computed from the box when needed rather
+ * than stored, which keeps a reference at 56 bytes (the build's memory
+ * peak is the references and the nodes together). */
 struct build_ref {
-	struct aabb box;
-	struct vec3 centre;
+	double lo[3], hi[3];
 	const struct shape *shape;
 };
 
@@ -61,6 +57,55 @@ struct build {
 	struct bvh_node *nodes;
 	size_t n_nodes, cap_nodes;
 };
+
+/* The bounds of a set of refs and of their centres.  Comparisons rather
+ * than fmin and fmax, which are library calls here: the boxes are finite,
+ * so the values are the same. */
+struct build_box {
+	double lo[3], hi[3];
+};
+
+static inline double ref_centre(const struct build_ref *r, int axis)
+{
+	return (r->lo[axis] + r->hi[axis]) * 0.5;
+}
+
+static double box_area(const struct build_box *b)
+{
+	double ex = b->hi[0] - b->lo[0], ey = b->hi[1] - b->lo[1], ez = b->hi[2] - b->lo[2];
+
+	return 2.0 * (ex * ey + ey * ez + ez * ex);
+}
+
+static void box_empty(struct build_box *b)
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		b->lo[k] = INFINITY;
+		b->hi[k] = -INFINITY;
+	}
+}
+
+static inline void box_grow_ref(struct build_box *b, const struct build_ref *r)
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		b->lo[k] = r->lo[k] < b->lo[k] ? r->lo[k] : b->lo[k];
+		b->hi[k] = r->hi[k] > b->hi[k] ? r->hi[k] : b->hi[k];
+	}
+}
+
+static inline void box_grow(struct build_box *b, const struct build_box *o)
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		b->lo[k] = o->lo[k] < b->lo[k] ? o->lo[k] : b->lo[k];
+		b->hi[k] = o->hi[k] > b->hi[k] ? o->hi[k] : b->hi[k];
+	}
+}
 
 static float float_down(double v)
 {
@@ -74,18 +119,22 @@ static float float_up(double v)
 	return (double)f < v ? nextafterf(f, INFINITY) : f;
 }
 
-static struct aabb refs_bounds(const struct build_ref *refs, size_t n, struct aabb *centres)
+static void refs_bounds(const struct build_ref *refs, size_t n, struct build_box *box,
+			struct build_box *centres)
 {
-	struct aabb box = refs[0].box;
 	size_t i;
+	int k;
 
-	centres->min = centres->max = refs[0].centre;
-	for (i = 1; i < n; i++) {
-		box = aabb_union(box, refs[i].box);
-		centres->min = vec3_min(centres->min, refs[i].centre);
-		centres->max = vec3_max(centres->max, refs[i].centre);
+	box_empty(box);
+	box_empty(centres);
+	for (i = 0; i < n; i++) {
+		box_grow_ref(box, &refs[i]);
+		for (k = 0; k < 3; k++) {
+			double c = ref_centre(&refs[i], k);
+			centres->lo[k] = c < centres->lo[k] ? c : centres->lo[k];
+			centres->hi[k] = c > centres->hi[k] ? c : centres->hi[k];
+		}
 	}
-	return box;
 }
 
 static int bin_of(double c, double lo, double scale)
@@ -94,60 +143,72 @@ static int bin_of(double c, double lo, double scale)
 	return b < 0 ? 0 : b >= ACCEL_BINS ? ACCEL_BINS - 1 : b;
 }
 
-/* Chooses an axis and a bin boundary by the surface area heuristic.
- * Returns false when no split beats a leaf (or none is possible). */
-static bool sah_split(const struct build_ref *refs, size_t n, struct aabb box,
-		      struct aabb centres, int *out_axis, double *out_pos)
+struct sah_bin {
+	struct build_box box;	/* empty while no ref falls in the bin */
+	size_t n;
+};
+
+/* Chooses an axis and a bin boundary by the surface area heuristic: the
+ * cost of a split, relative to its parent's, is n_left area_left +
+ * n_right area_right (a traversal step is cheap next to a shape test, so
+ * it is left out), against n area for a leaf.  All three axes are binned
+ * in one pass over the refs.  Returns false when no split beats a leaf
+ * (or none is possible). */
+static bool sah_split(const struct build_ref *refs, size_t n, const struct build_box *box,
+		      const struct build_box *centres, int *out_axis, double *out_pos)
 {
-	double best = ((double)n - ACCEL_TRAV_COST) * aabb_area(box);
-	bool found = false;
-	int axis;
+	struct sah_bin bins[3][ACCEL_BINS];
+	double best = (double)n * box_area(box), scale[3];
+	bool found = false, usable[3];
+	size_t i;
+	int axis, b;
 
 	for (axis = 0; axis < 3; axis++) {
-		double lo = vec3_component(centres.min, axis);
-		double extent = vec3_component(centres.max, axis) - lo;
-		struct aabb bin_box[ACCEL_BINS], right_box[ACCEL_BINS];
-		size_t bin_count[ACCEL_BINS] = { 0 }, left_n = 0, right_n[ACCEL_BINS];
-		bool bin_used[ACCEL_BINS] = { false };
-		struct aabb left = { { 0, 0, 0 }, { 0, 0, 0 } };
-		double scale;
-		size_t i;
-		int b;
-
-		if (!(extent > 0.0))
-			continue;
-		scale = ACCEL_BINS / extent;
-		for (i = 0; i < n; i++) {
-			b = bin_of(vec3_component(refs[i].centre, axis), lo, scale);
-			bin_box[b] = bin_used[b] ? aabb_union(bin_box[b], refs[i].box) : refs[i].box;
-			bin_used[b] = true;
-			bin_count[b]++;
+		double extent = centres->hi[axis] - centres->lo[axis];
+		usable[axis] = extent > 0.0;
+		scale[axis] = usable[axis] ? ACCEL_BINS / extent : 0.0;
+		for (b = 0; b < ACCEL_BINS; b++) {
+			box_empty(&bins[axis][b].box);
+			bins[axis][b].n = 0;
 		}
+	}
+	for (i = 0; i < n; i++) {
+		for (axis = 0; axis < 3; axis++) {
+			struct sah_bin *bin;
+			if (!usable[axis])
+				continue;
+			bin = &bins[axis][bin_of(ref_centre(&refs[i], axis), centres->lo[axis], scale[axis])];
+			box_grow_ref(&bin->box, &refs[i]);
+			bin->n++;
+		}
+	}
+	for (axis = 0; axis < 3; axis++) {
+		struct build_box right_box[ACCEL_BINS], left, acc;
+		size_t right_n[ACCEL_BINS], left_n = 0;
+
+		if (!usable[axis])
+			continue;
 		/* Sweep from the right for the right-hand boxes, then from the left. */
+		box_empty(&acc);
 		right_n[ACCEL_BINS - 1] = 0;
 		for (b = ACCEL_BINS - 1; b > 0; b--) {
-			bool have = b < ACCEL_BINS - 1 && right_n[b] > 0;
-			right_n[b - 1] = right_n[b] + bin_count[b];
-			if (bin_used[b])
-				right_box[b - 1] = have ? aabb_union(right_box[b], bin_box[b]) : bin_box[b];
-			else if (have)
-				right_box[b - 1] = right_box[b];
+			box_grow(&acc, &bins[axis][b].box);
+			right_box[b - 1] = acc;
+			right_n[b - 1] = right_n[b] + bins[axis][b].n;
 		}
+		box_empty(&left);
 		for (b = 0; b < ACCEL_BINS - 1; b++) {
 			double cost;
-			if (bin_used[b])
-				left = left_n > 0 ? aabb_union(left, bin_box[b]) : bin_box[b];
-			left_n += bin_count[b];
+			box_grow(&left, &bins[axis][b].box);
+			left_n += bins[axis][b].n;
 			if (left_n == 0 || right_n[b] == 0)
 				continue;
-			/* Cost relative to the parent's: one traversal step is cheap
-			 * next to a shape test, so it is left out. */
-			cost = (double)left_n * aabb_area(left) + (double)right_n[b] * aabb_area(right_box[b]);
+			cost = (double)left_n * box_area(&left) + (double)right_n[b] * box_area(&right_box[b]);
 			if (cost < best) {
 				best = cost;
 				found = true;
 				*out_axis = axis;
-				*out_pos = lo + (b + 1) / scale;
+				*out_pos = centres->lo[axis] + (b + 1) / scale[axis];
 			}
 		}
 	}
@@ -159,7 +220,7 @@ static size_t partition(struct build_ref *refs, size_t n, int axis, double pos)
 	size_t i = 0, j = n;
 
 	while (i < j) {
-		if (vec3_component(refs[i].centre, axis) < pos) {
+		if (ref_centre(&refs[i], axis) < pos) {
 			i++;
 		} else {
 			struct build_ref tmp = refs[i];
@@ -173,32 +234,33 @@ static size_t partition(struct build_ref *refs, size_t n, int axis, double pos)
 /* Orders refs by their centre along one axis, for the median split. */
 static int compare_centre_x(const void *a, const void *b)
 {
-	double ca = ((const struct build_ref *)a)->centre.x, cb = ((const struct build_ref *)b)->centre.x;
+	double ca = ref_centre(a, 0), cb = ref_centre(b, 0);
 	return (ca > cb) - (ca < cb);
 }
 
 static int compare_centre_y(const void *a, const void *b)
 {
-	double ca = ((const struct build_ref *)a)->centre.y, cb = ((const struct build_ref *)b)->centre.y;
+	double ca = ref_centre(a, 1), cb = ref_centre(b, 1);
 	return (ca > cb) - (ca < cb);
 }
 
 static int compare_centre_z(const void *a, const void *b)
 {
-	double ca = ((const struct build_ref *)a)->centre.z, cb = ((const struct build_ref *)b)->centre.z;
+	double ca = ref_centre(a, 2), cb = ref_centre(b, 2);
 	return (ca > cb) - (ca < cb);
 }
 
 /* Splits at the median along the widest centre axis, for when the
  * heuristic gives up on a node that is still too big or the tree is
  * already deep (rare, so a sort is cheap enough). */
-static size_t median_split(struct build_ref *refs, size_t n, struct aabb centres)
+static size_t median_split(struct build_ref *refs, size_t n, const struct build_box *centres)
 {
 	static int (*const compare[3])(const void *, const void *) = {
 		compare_centre_x, compare_centre_y, compare_centre_z
 	};
-	struct vec3 e = vec3_sub(centres.max, centres.min);
-	int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+	double ex = centres->hi[0] - centres->lo[0], ey = centres->hi[1] - centres->lo[1];
+	double ez = centres->hi[2] - centres->lo[2];
+	int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
 
 	qsort(refs, n, sizeof(*refs), compare[axis]);
 	return n / 2;
@@ -221,31 +283,32 @@ static int push_node(struct build *b, size_t *index)
 	return 0;
 }
 
-static void set_child_box(struct bvh_node *node, int c, struct aabb box)
+static void set_child_box(struct bvh_node *node, int c, const struct build_box *box)
 {
 	int k;
 
 	for (k = 0; k < 3; k++) {
-		node->bounds[0][k][c] = float_down(vec3_component(box.min, k));
-		node->bounds[1][k][c] = float_up(vec3_component(box.max, k));
+		node->bounds[0][k][c] = float_down(box->lo[k]);
+		node->bounds[1][k][c] = float_up(box->hi[k]);
 	}
 }
 
 /* Where to split refs[first, first + n) (sorting them so), or 0 to make
  * them a leaf; *box receives their bounds. */
-static size_t choose_split(struct build *b, size_t first, size_t n, int depth, struct aabb *box)
+static size_t choose_split(struct build *b, size_t first, size_t n, int depth,
+			   struct build_box *box)
 {
 	struct build_ref *refs = b->refs + first;
-	struct aabb centres;
+	struct build_box centres;
 	size_t split = 0;
 	double pos = 0.0;
 	int axis = 0;
 
-	*box = refs_bounds(refs, n, &centres);
-	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, *box, centres, &axis, &pos))
+	refs_bounds(refs, n, box, &centres);
+	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, box, &centres, &axis, &pos))
 		split = partition(refs, n, axis, pos);
 	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX)
-		split = median_split(refs, n, centres);
+		split = median_split(refs, n, &centres);
 	return split == n ? 0 : split;
 }
 
@@ -253,11 +316,11 @@ static size_t choose_split(struct build *b, size_t first, size_t n, int depth, s
  * c of node `parent`: its box, and a leaf or the node built for it. */
 static int build_node(struct build *b, size_t parent, int c, size_t first, size_t n, int depth)
 {
-	struct aabb box;
+	struct build_box box;
 	size_t index, split = choose_split(b, first, n, depth, &box);
 	int rc;
 
-	set_child_box(&b->nodes[parent], c, box);
+	set_child_box(&b->nodes[parent], c, &box);
 	if (split == 0) {
 		b->nodes[parent].child[c] = ACCEL_LEAF | (uint32_t)first;
 		b->nodes[parent].count[c] = (uint32_t)n;
@@ -277,7 +340,7 @@ static int build_node(struct build *b, size_t parent, int c, size_t first, size_
  * minimum is +inf and its maximum -inf on every axis). */
 static int build_root(struct build *b, size_t n)
 {
-	struct aabb box;
+	struct build_box box;
 	size_t root, split;
 	int rc, k;
 
@@ -285,7 +348,7 @@ static int build_root(struct build *b, size_t n)
 		return rc;
 	split = choose_split(b, 0, n, 0, &box);
 	if (split == 0) {
-		set_child_box(&b->nodes[root], 0, box);
+		set_child_box(&b->nodes[root], 0, &box);
 		b->nodes[root].child[0] = ACCEL_LEAF;
 		b->nodes[root].count[0] = (uint32_t)n;
 		for (k = 0; k < 3; k++) {
@@ -305,33 +368,54 @@ int accel_build(const struct scene *s, struct accel **out, struct diag *d)
 {
 	struct build b = { NULL, NULL, 0, 0 };
 	struct accel *a;
-	size_t i;
+	size_t i, n_unbounded = 0;
 	int rc = -RT_E_NOMEM;
 
 	*out = NULL;
 	a = rt_calloc(1, sizeof(*a));
 	if (!a)
 		goto out_nomem;
-	a->bounded = rt_reallocarray(NULL, s->n_shapes, sizeof(*a->bounded));
-	a->unbounded = rt_reallocarray(NULL, s->n_shapes, sizeof(*a->unbounded));
 	b.refs = rt_reallocarray(NULL, s->n_shapes, sizeof(*b.refs));
-	if (!a->bounded || !a->unbounded || !b.refs)
+	if (!b.refs)
 		goto out_free;
 	for (i = 0; i < s->n_shapes; i++) {
 		struct build_ref *ref = &b.refs[a->n_bounded];
-		if (shape_bounds(s->shapes[i], &ref->box)) {
-			ref->centre = aabb_centre(ref->box);
+		struct aabb box;
+		if (shape_bounds(s->shapes[i], &box)) {
+			ref->lo[0] = box.min.x;
+			ref->lo[1] = box.min.y;
+			ref->lo[2] = box.min.z;
+			ref->hi[0] = box.max.x;
+			ref->hi[1] = box.max.y;
+			ref->hi[2] = box.max.z;
 			ref->shape = s->shapes[i];
 			a->n_bounded++;
 		} else {
-			a->unbounded[a->n_unbounded++] = s->shapes[i];
+			n_unbounded++;
 		}
 	}
+	a->unbounded = rt_reallocarray(NULL, n_unbounded, sizeof(*a->unbounded));
+	if (!a->unbounded)
+		goto out_free;
+	for (i = 0; i < s->n_shapes; i++) {
+		struct aabb box;
+		if (!shape_bounds(s->shapes[i], &box))
+			a->unbounded[a->n_unbounded++] = s->shapes[i];
+	}
 	if (a->n_bounded > 0) {
+		const struct shape **leaf_order = (const struct shape **)(void *)b.refs;
 		if ((rc = build_root(&b, a->n_bounded)) < 0)
 			goto out_free;
+		/* The shapes in leaf order go to the front of the refs' own
+		 * memory (pointer i lands before ref i is read, never on a ref
+		 * still to be read), which then shrinks: no third array at the
+		 * build's memory peak. */
 		for (i = 0; i < a->n_bounded; i++)
-			a->bounded[i] = b.refs[i].shape;
+			leaf_order[i] = b.refs[i].shape;
+		a->bounded = rt_reallocarray(leaf_order, a->n_bounded, sizeof(*a->bounded));
+		if (!a->bounded)
+			a->bounded = leaf_order;
+		b.refs = NULL;
 		a->nodes = b.nodes;
 		a->n_nodes = b.n_nodes;
 		b.nodes = NULL;
