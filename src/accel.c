@@ -6,6 +6,7 @@
  * works on both) and what each child is: another node or a leaf's range of
  * shapes.  Traversal visits children nearest entry first, in the same order
  * as a one-box-per-node tree would, so equal-distance hits resolve alike. */
+#include <assert.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -17,21 +18,23 @@
 #include "scene.h"
 
 #define ACCEL_BINS 16
-#define ACCEL_LEAF_MAX 4
+#define ACCEL_LEAF_MAX 4	/* at most 7: a leaf's size is its slot's tag */
 #define ACCEL_STACK 128
 /* Past this depth the build splits at the median, so the depth (and the
  * traversal stack) stays bounded whatever the input. */
 #define ACCEL_SAH_DEPTH 40
 
-/* The child slot word: a node index, or ACCEL_LEAF plus the first of the
- * leaf's `count` shapes in accel.bounded. */
-#define ACCEL_LEAF 0x80000000u
+/* What a child slot holds, by its low three bits: 0, the one shape of a
+ * leaf (a pointer: shapes are at least 8-byte aligned), so that the most
+ * common leaf costs no look-up in accel.bounded; 1, a node (index << 3);
+ * 2 to ACCEL_LEAF_MAX, a leaf of that many shapes from accel.bounded[slot
+ * >> 3].  A null pointer is an empty slot. */
+#define ACCEL_SLOT_NODE 1u
 
 struct bvh_node {
 	/* bounds[side][axis][child]: side 0 the minimum, 1 the maximum. */
 	float bounds[2][3][2];
-	uint32_t child[2];
-	uint32_t count[2];	/* shapes in a leaf child; 0 for a node */
+	uintptr_t slot[2];
 };
 
 struct accel {
@@ -271,7 +274,7 @@ static int push_node(struct build *b, size_t *index)
 	if (b->n_nodes == b->cap_nodes) {
 		size_t cap = b->cap_nodes ? b->cap_nodes * 2 : 64;
 		struct bvh_node *p;
-		if (cap > ACCEL_LEAF)
+		if (cap > UINTPTR_MAX >> 3)
 			return -RT_E_NOMEM;
 		p = rt_reallocarray(b->nodes, cap, sizeof(*p));
 		if (!p)
@@ -312,6 +315,19 @@ static size_t choose_split(struct build *b, size_t first, size_t n, int depth,
 	return split == n ? 0 : split;
 }
 
+/* The slot of a leaf over refs[first, first + n): their place is final
+ * once they make a leaf. */
+static uintptr_t leaf_slot(const struct build *b, size_t first, size_t n)
+{
+	uintptr_t one = (uintptr_t)b->refs[first].shape;
+
+	assert(n >= 1 && n <= ACCEL_LEAF_MAX && ACCEL_LEAF_MAX <= 7);
+	if (n > 1)
+		return (uintptr_t)first << 3 | n;
+	assert((one & 7) == 0);
+	return one;
+}
+
 /* Builds the subtree over refs[first, first + n) and describes it as child
  * c of node `parent`: its box, and a leaf or the node built for it. */
 static int build_node(struct build *b, size_t parent, int c, size_t first, size_t n, int depth)
@@ -322,14 +338,12 @@ static int build_node(struct build *b, size_t parent, int c, size_t first, size_
 
 	set_child_box(&b->nodes[parent], c, &box);
 	if (split == 0) {
-		b->nodes[parent].child[c] = ACCEL_LEAF | (uint32_t)first;
-		b->nodes[parent].count[c] = (uint32_t)n;
+		b->nodes[parent].slot[c] = leaf_slot(b, first, n);
 		return 0;
 	}
 	if ((rc = push_node(b, &index)) < 0)
 		return rc;
-	b->nodes[parent].child[c] = (uint32_t)index;
-	b->nodes[parent].count[c] = 0;
+	b->nodes[parent].slot[c] = (uintptr_t)index << 3 | ACCEL_SLOT_NODE;
 	if ((rc = build_node(b, index, 0, first, split, depth + 1)) < 0)
 		return rc;
 	return build_node(b, index, 1, first + split, n - split, depth + 1);
@@ -349,14 +363,12 @@ static int build_root(struct build *b, size_t n)
 	split = choose_split(b, 0, n, 0, &box);
 	if (split == 0) {
 		set_child_box(&b->nodes[root], 0, &box);
-		b->nodes[root].child[0] = ACCEL_LEAF;
-		b->nodes[root].count[0] = (uint32_t)n;
+		b->nodes[root].slot[0] = leaf_slot(b, 0, n);
 		for (k = 0; k < 3; k++) {
 			b->nodes[root].bounds[0][k][1] = INFINITY;
 			b->nodes[root].bounds[1][k][1] = -INFINITY;
 		}
-		b->nodes[root].child[1] = ACCEL_LEAF;
-		b->nodes[root].count[1] = 0;
+		b->nodes[root].slot[1] = 0;
 		return 0;
 	}
 	if ((rc = build_node(b, root, 0, 0, split, 1)) < 0)
@@ -575,28 +587,52 @@ static inline int node_hits(const struct bvh_node *node, const struct ray_slab_s
 }
 #endif
 
-/* Tests the shapes of leaf slot `child` (count of them) for the nearest hit. */
-static inline const struct shape *leaf_intersect(const struct accel *a, uint32_t child,
-						 uint32_t count, const struct ray *r,
-						 double t_min, double *t_max, const struct shape *hit)
+/* Tests the shapes of a leaf slot for the nearest hit. */
+static inline const struct shape *leaf_intersect(const struct accel *a, uintptr_t slot,
+						 const struct ray *r, double t_min, double *t_max,
+						 const struct shape *hit)
 {
-	const struct shape *const *sh = a->bounded + (child & ~ACCEL_LEAF);
-	uint32_t k;
+	unsigned count = (unsigned)(slot & 7), k;
 
-	for (k = 0; k < count; k++)
-		if (shape_intersect(sh[k], r, t_min, t_max))
-			hit = sh[k];
+	if (count == 0) {
+		const struct shape *sh = (const struct shape *)slot;
+		return sh && shape_intersect(sh, r, t_min, t_max) ? sh : hit;
+	}
+	for (k = 0; k < count; k++) {
+		const struct shape *sh = a->bounded[(slot >> 3) + k];
+		if (shape_intersect(sh, r, t_min, t_max))
+			hit = sh;
+	}
 	return hit;
+}
+
+/* Whether any shape of a leaf slot is hit within (t_min, t_max). */
+static inline bool leaf_occluded(const struct accel *a, uintptr_t slot, const struct ray *r,
+				 double t_min, double t_max)
+{
+	unsigned count = (unsigned)(slot & 7), k;
+	double t = t_max;
+
+	if (count == 0) {
+		const struct shape *sh = (const struct shape *)slot;
+		return sh && shape_intersect(sh, r, t_min, &t);
+	}
+	for (k = 0; k < count; k++) {
+		t = t_max;
+		if (shape_intersect(a->bounded[(slot >> 3) + k], r, t_min, &t))
+			return true;
+	}
+	return false;
 }
 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 				    double t_min, double *t_max)
 {
 	const struct shape *hit = NULL;
-	struct { uint32_t child, count; double entry; } stack[ACCEL_STACK];
+	struct { uintptr_t slot; double entry; } stack[ACCEL_STACK];
 	struct ray_slab rs;
 	struct ray_slab_sse v;
-	uint32_t node = 0;
+	uintptr_t node = 0;
 	size_t i;
 	int top = 0;
 
@@ -621,15 +657,14 @@ const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 			/* The farther child waits on the stack; the nearer one is
 			 * entered now, a leaf's shapes tested at once. */
 			if (e[far] != INFINITY) {
-				stack[top].child = n->child[far];
-				stack[top].count = n->count[far];
+				stack[top].slot = n->slot[far];
 				stack[top++].entry = e[far];
 			}
-			if (!(n->child[near] & ACCEL_LEAF)) {
-				node = n->child[near];
+			if ((n->slot[near] & 7) == ACCEL_SLOT_NODE) {
+				node = n->slot[near] >> 3;
 				continue;
 			}
-			hit = leaf_intersect(a, n->child[near], n->count[near], r, t_min, t_max, hit);
+			hit = leaf_intersect(a, n->slot[near], r, t_min, t_max, hit);
 		}
 		/* Back up to the nearest waiting child that a hit found since has
 		 * not ruled out. */
@@ -639,17 +674,17 @@ const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 			top--;
 			if (stack[top].entry > *t_max)
 				continue;
-			if (!(stack[top].child & ACCEL_LEAF))
+			if ((stack[top].slot & 7) == ACCEL_SLOT_NODE)
 				break;
-			hit = leaf_intersect(a, stack[top].child, stack[top].count, r, t_min, t_max, hit);
+			hit = leaf_intersect(a, stack[top].slot, r, t_min, t_max, hit);
 		}
-		node = stack[top].child;
+		node = stack[top].slot >> 3;
 	}
 }
 
 bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
 {
-	uint32_t stack[ACCEL_STACK];
+	uintptr_t stack[ACCEL_STACK];
 	struct ray_slab rs;
 	struct ray_slab_sse v;
 	size_t i;
@@ -674,17 +709,10 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 		for (c = 0; c < 2; c++) {
 			if (!(hits & (1 << c)))
 				continue;
-			if (n->child[c] & ACCEL_LEAF) {
-				const struct shape *const *sh = a->bounded + (n->child[c] & ~ACCEL_LEAF);
-				uint32_t k;
-				for (k = 0; k < n->count[c]; k++) {
-					double t = t_max;
-					if (shape_intersect(sh[k], r, t_min, &t))
-						return true;
-				}
-			} else {
-				stack[top++] = n->child[c];
-			}
+			if ((n->slot[c] & 7) == ACCEL_SLOT_NODE)
+				stack[top++] = n->slot[c] >> 3;
+			else if (leaf_occluded(a, n->slot[c], r, t_min, t_max))
+				return true;
 		}
 	}
 	return false;
