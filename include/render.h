@@ -48,14 +48,15 @@ struct render_job {
 	/* The rectangle of the full image to render, end-exclusive; the image
 	 * is (x1 - x0) x (y1 - y0). */
 	int x0, y0, x1, y1;
-	const volatile sig_atomic_t *cancel;	/* polled per row; may be NULL */
-	/* Called now and then with rows done and total; may be NULL. */
+	const volatile sig_atomic_t *cancel;	/* polled per tile; may be NULL */
+	/* Called now and then with the work done and the total (in tiles of
+	 * 16x16 pixels); may be NULL. */
 	void (*progress)(void *ctx, long done, long total);
 	void *progress_ctx;
 };
 
 /* Renders into img, which must have the rectangle's size.  Threads take
- * rows from a shared counter; the image does not depend on their number. */
+ * tiles from a shared counter; the image does not depend on their number. */
 int render_image(const struct render_job *job, struct image *img,
 		 struct ray_counts *counts, struct diag *d);
 

@@ -1,6 +1,6 @@
 /* The shading model of scene-format.md (ambient, diffuse, tinted specular,
  * coloured point lights with shadows, recursive reflection, clamping) and
- * the image loop, whose threads take rows from a shared counter. */
+ * the image loop, whose threads take tiles from a shared counter. */
 #include <errno.h>
 #include <pthread.h>
 #include <string.h>
@@ -128,11 +128,16 @@ void render_color_to_rgb8(struct color c, uint8_t out[3])
 struct render_shared {
 	const struct render_job *job;
 	struct image *img;
-	long next_row;		/* taken with an atomic add */
-	long rows_done;
+	long next_tile;		/* taken with an atomic add */
+	long tiles_done;
 };
 
 #define RENDER_MAX_THREADS 64
+/* Threads take square tiles rather than rows: rays that follow each other
+ * on a thread then pass through the same part of the scene, so the nodes
+ * and shapes they meet are still in the cache (100k primitives, one
+ * thread: 1.06 s -> 1.00 s, median of 7). */
+#define RENDER_TILE 16
 
 struct render_worker {
 	struct render_shared *shared;
@@ -145,49 +150,63 @@ static bool render_cancelled(const struct render_job *job)
 	return job->cancel && *job->cancel;
 }
 
-static void render_row(const struct render_job *job, struct image *img, int y,
-		       struct ray_counts *counts)
+/* Renders one tile of the job's rectangle, clipped to it. */
+static void render_tile(const struct render_job *job, struct image *img, long tile,
+			struct ray_counts *counts)
 {
-	uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
-	int x;
+	long tiles_x = (job->x1 - job->x0 + RENDER_TILE - 1) / RENDER_TILE;
+	int tx0 = job->x0 + (int)(tile % tiles_x) * RENDER_TILE;
+	int ty0 = job->y0 + (int)(tile / tiles_x) * RENDER_TILE;
+	int tx1 = tx0 + RENDER_TILE < job->x1 ? tx0 + RENDER_TILE : job->x1;
+	int ty1 = ty0 + RENDER_TILE < job->y1 ? ty0 + RENDER_TILE : job->y1;
+	int x, y;
 
-	for (x = job->x0; x < job->x1; x++) {
-		struct ray r = camera_ray(job->camera, x, y);
-		struct color c;
-		counts->primary++;
-		c = render_trace(job->scene, &job->settings, &r, 1, counts);
-		render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
+	for (y = ty0; y < ty1; y++) {
+		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
+		for (x = tx0; x < tx1; x++) {
+			struct ray r = camera_ray(job->camera, x, y);
+			struct color c;
+			counts->primary++;
+			c = render_trace(job->scene, &job->settings, &r, 1, counts);
+			render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
+		}
 	}
 }
 
-/* Renders rows until none are left or the job is cancelled; only the
+static long render_tile_count(const struct render_job *job)
+{
+	return (long)((job->x1 - job->x0 + RENDER_TILE - 1) / RENDER_TILE) *
+	       ((job->y1 - job->y0 + RENDER_TILE - 1) / RENDER_TILE);
+}
+
+/* Renders tiles until none are left or the job is cancelled; only the
  * calling thread reports progress. */
-static void render_take_rows(struct render_worker *w, bool report)
+static void render_take_tiles(struct render_worker *w, bool report)
 {
 	struct render_shared *sh = w->shared;
 	const struct render_job *job = sh->job;
-	long rows = job->y1 - job->y0;
+	long tiles = render_tile_count(job);
 	/* Counted on this thread's stack: the workers' records share cache
 	 * lines, and bumping them per ray made two threads barely faster
 	 * than one. */
 	struct ray_counts counts = { 0, 0, 0 };
 
 	while (!render_cancelled(job)) {
-		long y = __atomic_fetch_add(&sh->next_row, 1, __ATOMIC_RELAXED);
+		long t = __atomic_fetch_add(&sh->next_tile, 1, __ATOMIC_RELAXED);
 		long done;
-		if (y >= rows)
+		if (t >= tiles)
 			break;
-		render_row(job, sh->img, job->y0 + (int)y, &counts);
-		done = __atomic_add_fetch(&sh->rows_done, 1, __ATOMIC_RELAXED);
+		render_tile(job, sh->img, t, &counts);
+		done = __atomic_add_fetch(&sh->tiles_done, 1, __ATOMIC_RELAXED);
 		if (report && job->progress)
-			job->progress(job->progress_ctx, done, rows);
+			job->progress(job->progress_ctx, done, tiles);
 	}
 	w->counts = counts;
 }
 
 static void *render_worker_main(void *arg)
 {
-	render_take_rows(arg, false);
+	render_take_tiles(arg, false);
 	return NULL;
 }
 
@@ -197,7 +216,7 @@ int render_image(const struct render_job *job, struct image *img,
 	struct render_worker workers[RENDER_MAX_THREADS];
 	struct render_shared shared;
 	int threads = job->threads, started = 0, i;
-	long rows = job->y1 - job->y0;
+	long tiles;
 
 	if (!job->scene->accel)
 		return diag_set(d, RT_E_INVALID, "", 0, 0, "the scene was not prepared");
@@ -209,8 +228,9 @@ int render_image(const struct render_job *job, struct image *img,
 		threads = 1;
 	if (threads > RENDER_MAX_THREADS)
 		threads = RENDER_MAX_THREADS;
-	if (threads > rows)
-		threads = (int)rows;
+	tiles = render_tile_count(job);
+	if (threads > tiles)
+		threads = (int)tiles;
 	memset(&shared, 0, sizeof(shared));
 	shared.job = job;
 	shared.img = img;
@@ -224,11 +244,11 @@ int render_image(const struct render_job *job, struct image *img,
 			break;
 		started++;
 	}
-	render_take_rows(&workers[0], true);
+	render_take_tiles(&workers[0], true);
 	for (i = 1; i <= started; i++)
 		pthread_join(workers[i].thread, NULL);
 	if (job->progress)
-		job->progress(job->progress_ctx, shared.rows_done, rows);
+		job->progress(job->progress_ctx, shared.tiles_done, tiles);
 	if (counts) {
 		memset(counts, 0, sizeof(*counts));
 		for (i = 0; i <= started; i++) {
