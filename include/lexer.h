@@ -16,7 +16,8 @@ struct token {
 
 struct lexer {
 	const char *pos, *end;
-	int line, col;
+	int line;
+	const char *line_start;	/* the first byte of the current line */
 };
 
 void lexer_init(struct lexer *lx, const char *text, size_t len);

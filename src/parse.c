@@ -217,13 +217,13 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 	char found[64];
 	int rc;
 
-	token_describe(&kw, found, sizeof(found));
 	if (!kw.text)
 		return parser_fail(p, RT_E_SYNTAX,
 				   "expected an object keyword (%s) for object %ld of %ld, found end of file",
 				   shape_keywords(), index, count);
 	ops = shape_ops_find(kw.text, kw.len);
 	if (!ops) {
+		token_describe(&kw, found, sizeof(found));
 		if (lexer_looks_numeric(&kw))
 			return parser_fail(p, RT_E_SYNTAX,
 					   "expected an object keyword (%s) for object %ld of %ld, found %s "
