@@ -90,24 +90,26 @@ static void box_empty(struct build_box *b)
 	}
 }
 
+/* b grows to take in the box lo..hi; written out per axis, as -O2 does not
+ * unroll it and the loop control was a third of the binning's work. */
+static inline void box_grow_by(struct build_box *b, const double lo[3], const double hi[3])
+{
+	b->lo[0] = lo[0] < b->lo[0] ? lo[0] : b->lo[0];
+	b->lo[1] = lo[1] < b->lo[1] ? lo[1] : b->lo[1];
+	b->lo[2] = lo[2] < b->lo[2] ? lo[2] : b->lo[2];
+	b->hi[0] = hi[0] > b->hi[0] ? hi[0] : b->hi[0];
+	b->hi[1] = hi[1] > b->hi[1] ? hi[1] : b->hi[1];
+	b->hi[2] = hi[2] > b->hi[2] ? hi[2] : b->hi[2];
+}
+
 static inline void box_grow_ref(struct build_box *b, const struct build_ref *r)
 {
-	int k;
-
-	for (k = 0; k < 3; k++) {
-		b->lo[k] = r->lo[k] < b->lo[k] ? r->lo[k] : b->lo[k];
-		b->hi[k] = r->hi[k] > b->hi[k] ? r->hi[k] : b->hi[k];
-	}
+	box_grow_by(b, r->lo, r->hi);
 }
 
 static inline void box_grow(struct build_box *b, const struct build_box *o)
 {
-	int k;
-
-	for (k = 0; k < 3; k++) {
-		b->lo[k] = o->lo[k] < b->lo[k] ? o->lo[k] : b->lo[k];
-		b->hi[k] = o->hi[k] > b->hi[k] ? o->hi[k] : b->hi[k];
-	}
+	box_grow_by(b, o->lo, o->hi);
 }
 
 static float float_down(double v)
@@ -186,27 +188,36 @@ static bool sah_split(const struct build_ref *refs, size_t n, const struct build
 		}
 	}
 	for (axis = 0; axis < 3; axis++) {
-		struct build_box right_box[ACCEL_BINS], left, acc;
+		struct build_box left, acc;
+		double right_area[ACCEL_BINS];
 		size_t right_n[ACCEL_BINS], left_n = 0;
 
 		if (!usable[axis])
 			continue;
-		/* Sweep from the right for the right-hand boxes, then from the left. */
+		/* Sweep from the right for the right-hand areas, then from the
+		 * left.  An empty bin leaves a box as it is, so it is skipped
+		 * (most bins of the many small nodes are empty). */
 		box_empty(&acc);
 		right_n[ACCEL_BINS - 1] = 0;
+		right_area[ACCEL_BINS - 1] = 0.0;
 		for (b = ACCEL_BINS - 1; b > 0; b--) {
-			box_grow(&acc, &bins[axis][b].box);
-			right_box[b - 1] = acc;
 			right_n[b - 1] = right_n[b] + bins[axis][b].n;
+			if (bins[axis][b].n == 0) {
+				right_area[b - 1] = right_area[b];
+				continue;
+			}
+			box_grow(&acc, &bins[axis][b].box);
+			right_area[b - 1] = box_area(&acc);
 		}
 		box_empty(&left);
 		for (b = 0; b < ACCEL_BINS - 1; b++) {
 			double cost;
-			box_grow(&left, &bins[axis][b].box);
+			if (bins[axis][b].n > 0)
+				box_grow(&left, &bins[axis][b].box);
 			left_n += bins[axis][b].n;
 			if (left_n == 0 || right_n[b] == 0)
 				continue;
-			cost = (double)left_n * box_area(&left) + (double)right_n[b] * box_area(&right_box[b]);
+			cost = (double)left_n * box_area(&left) + (double)right_n[b] * right_area[b];
 			if (cost < best) {
 				best = cost;
 				found = true;
