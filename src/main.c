@@ -36,6 +36,8 @@ enum {
 	OPT_FRAMES,
 	OPT_FRAME,
 	OPT_PATH,
+	OPT_GRID,
+	OPT_TILE,
 };
 
 #define NAME_MAX_LEN 4096
@@ -57,6 +59,8 @@ struct options {
 	int frame;			/* 0: every frame */
 	const char *path_file;		/* keyframes; NULL: the orbit */
 	bool numbered;			/* output is a pattern with a frame number */
+	int grid_cols, grid_rows;	/* --grid; 0: none */
+	int tile;			/* --tile K of the grid, 1-based */
 };
 
 static volatile sig_atomic_t cancelled;
@@ -85,6 +89,9 @@ static void usage(FILE *f)
 		"      --region X0,Y0,X1,Y1  render only these pixels (0-based, X1 and Y1\n"
 		"                         excluded) to a PNG tile that records its place\n"
 		"                         (default name SCENE-region-X0-Y0-X1-Y1.png)\n"
+		"      --grid CxR --tile K  render tile K (1..C*R, row by row from the top\n"
+		"                         left) of the image cut into C columns and R rows,\n"
+		"                         as --region (default name SCENE-tile-K.png)\n"
 		"      --frames N         an animation of N frames: a full turn of the eye\n"
 		"                         about the up axis through the look-at point, or\n"
 		"                         the keyframes of --path; FILE of -o is a pattern\n"
@@ -182,6 +189,47 @@ out_bad:
 			RT_MAX_IMAGE_SIZE, arg);
 }
 
+/* "CxR": columns and rows. */
+static int parse_grid(const char *arg, struct options *o, struct diag *d)
+{
+	char buf[64], *x;
+	long c, r;
+
+	if (strlen(arg) >= sizeof(buf))
+		goto out_bad;
+	strcpy(buf, arg);
+	x = strchr(buf, 'x');
+	if (!x)
+		goto out_bad;
+	*x = '\0';
+	if (cli_parse_long("--grid", buf, 1, RT_MAX_IMAGE_SIZE, &c, d) < 0 ||
+	    cli_parse_long("--grid", x + 1, 1, RT_MAX_IMAGE_SIZE, &r, d) < 0)
+		goto out_bad;
+	o->grid_cols = (int)c;
+	o->grid_rows = (int)r;
+	return 0;
+out_bad:
+	return diag_set(d, RT_E_INVALID, "", 0, 0,
+			"expected COLUMNSxROWS (integers from 1 to %d), found '%s'", RT_MAX_IMAGE_SIZE, arg);
+}
+
+/* Tile K of the grid, counted row by row from the top left; the cuts
+ * are at floor(i * size / n), so the tiles cover any size exactly. */
+static int grid_region(struct options *o, int size, struct diag *d)
+{
+	long long k = o->tile - 1, col = k % o->grid_cols, row = k / o->grid_cols;
+
+	o->x0 = (int)(col * size / o->grid_cols);
+	o->x1 = (int)((col + 1) * size / o->grid_cols);
+	o->y0 = (int)(row * size / o->grid_rows);
+	o->y1 = (int)((row + 1) * size / o->grid_rows);
+	o->region = true;
+	if (o->grid_cols > size || o->grid_rows > size)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "a %dx%d grid is finer than the %dx%d image",
+				o->grid_cols, o->grid_rows, size, size);
+	return 0;
+}
+
 static bool is_directory(const char *path)
 {
 	struct stat st;
@@ -199,6 +247,8 @@ static int resolve_output(struct options *o)
 
 	if (o->region)
 		snprintf(suffix, sizeof(suffix), "-region-%d-%d-%d-%d", o->x0, o->y0, o->x1, o->y1);
+	else if (o->grid_cols)
+		snprintf(suffix, sizeof(suffix), "-tile-%d", o->tile);
 	if (o->frames) {
 		if (!o->output || is_directory(o->output)) {
 			dir = o->output ? o->output : "";
@@ -234,8 +284,8 @@ static int resolve_output(struct options *o)
 			return usage_error("--output: cannot tell the format of '%s' (use .png, .bmp or .ppm, or --format)",
 					   o->output);
 	}
-	if (o->region && o->format != RT_FORMAT_PNG)
-		return usage_error("--region: tiles are PNG files (their place is kept in PNG chunks), found '%s'",
+	if ((o->region || o->grid_cols) && o->format != RT_FORMAT_PNG)
+		return usage_error("--region, --grid: tiles are PNG files (their place is kept in PNG chunks), found '%s'",
 				   o->output);
 	return 0;
 }
@@ -253,6 +303,8 @@ static int parse_args(int argc, char **argv, struct options *o)
 		{ "frames", required_argument, NULL, OPT_FRAMES },
 		{ "frame", required_argument, NULL, OPT_FRAME },
 		{ "path", required_argument, NULL, OPT_PATH },
+		{ "grid", required_argument, NULL, OPT_GRID },
+		{ "tile", required_argument, NULL, OPT_TILE },
 		{ "help", no_argument, NULL, 'h' },
 		{ "version", no_argument, NULL, 'V' },
 		{ NULL, 0, NULL, 0 },
@@ -320,6 +372,15 @@ static int parse_args(int argc, char **argv, struct options *o)
 				return usage_error("--path: %s", "expected a file name, found ''");
 			o->path_file = optarg;
 			break;
+		case OPT_GRID:
+			if (parse_grid(optarg, o, &d) < 0)
+				return usage_error("--grid: %s", d.msg);
+			break;
+		case OPT_TILE:
+			if (cli_parse_long("--tile", optarg, 1, RT_MAX_PIXELS, &n, &d) < 0)
+				return usage_error("%s", d.msg);
+			o->tile = (int)n;
+			break;
 		case 'h':
 			usage(stdout);
 			exit(0);
@@ -352,6 +413,17 @@ static int parse_args(int argc, char **argv, struct options *o)
 	}
 	if (o->path_file && !o->frames)
 		return usage_error("--path %s needs --frames N", o->path_file);
+	if (!o->grid_cols != !o->tile)
+		return usage_error("%s", o->tile ? "--tile K needs --grid COLUMNSxROWS" :
+				   "--grid COLUMNSxROWS needs --tile K");
+	if (o->grid_cols && o->region)
+		return usage_error("%s", "--region and --grid cannot be combined");
+	if ((long)o->tile > (long)o->grid_cols * o->grid_rows) {
+		char msg[96];
+		snprintf(msg, sizeof(msg), "--tile %d is past the last tile of --grid %dx%d",
+			 o->tile, o->grid_cols, o->grid_rows);
+		return usage_error("%s", msg);
+	}
 	return resolve_output(o);
 }
 
@@ -531,8 +603,9 @@ static int run(struct options *o)
 		print_diag(&d, "error");
 		return rc == -RT_E_INVALID ? EXIT_USAGE : EXIT_SCENE;
 	}
-	if (o->region && tile_check_region(o->x0, o->y0, o->x1, o->y1, s->image_size, s->image_size, &d) < 0) {
-		fprintf(stderr, "whitted: error: --region: %s\n", d.msg);
+	if ((o->grid_cols && grid_region(o, s->image_size, &d) < 0) ||
+	    (o->region && tile_check_region(o->x0, o->y0, o->x1, o->y1, s->image_size, s->image_size, &d) < 0)) {
+		fprintf(stderr, "whitted: error: %s: %s\n", o->grid_cols ? "--grid" : "--region", d.msg);
 		scene_destroy(s);
 		return EXIT_USAGE;
 	}
