@@ -6,7 +6,7 @@
 VIEWER_SRC := $(wildcard viewer/*.c)
 VIEWER_OBJ := $(VIEWER_SRC:%.c=$(BUILD)/%.o)
 # The modules without GL, linked into their unit tests.
-VIEWER_PURE := fly_camera mesh
+VIEWER_PURE := fly_camera mesh command
 VIEWER_TEST_BIN := $(VIEWER_PURE:%=$(BUILD)/san/tests/viewer/test_%)
 VIEWER_HAVE_GL := $(shell pkg-config --exists glut gl 2>/dev/null && echo yes)
 VIEWER_GL_CFLAGS := $(shell pkg-config --cflags glut gl 2>/dev/null)
