@@ -60,6 +60,10 @@ if ! wait_for 100 '[ -s "$tmp/display" ]'; then
 fi
 DISPLAY=:$(cat "$tmp/display")
 export DISPLAY
+if ! wait_for 100 'xdotool getmouselocation >/dev/null 2>&1'; then
+	bad "Xvfb on $DISPLAY accepts clients (log: $(cat "$tmp/xvfb.log"))"
+	finish
+fi
 
 # An existing capture-1.png must survive: the capture goes to capture-2.png.
 echo "not a capture" >capture-1.png
@@ -69,7 +73,7 @@ viewer_pid=$!
 win=""
 find_window() { win=$(xdotool search --name '^whitted: scene\.txt' 2>/dev/null | head -n 1); [ -n "$win" ]; }
 if ! wait_for 200 find_window; then
-	bad "a window titled 'whitted: scene.txt' opened (stderr: $(cat stderr.txt))"
+	bad "a window titled 'whitted: scene.txt' opened (stderr: $(cat stderr.txt); Xvfb: $(cat "$tmp/xvfb.log"))"
 	finish
 fi
 ok "window '$(xdotool getwindowname "$win")' opened"
