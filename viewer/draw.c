@@ -19,6 +19,16 @@
  * under the highlights; the checker itself comes from the texture. */
 #define DRAW_FLOOR_GRID 96
 
+/* Widens box along one axis to take in [lo, hi]. */
+static void box_include_axis(struct aabb *box, int axis, double lo, double hi)
+{
+	double *min = axis == 0 ? &box->min.x : axis == 1 ? &box->min.y : &box->min.z;
+	double *max = axis == 0 ? &box->max.x : axis == 1 ? &box->max.y : &box->max.z;
+
+	*min = fmin(*min, lo);
+	*max = fmax(*max, hi);
+}
+
 struct aabb draw_scene_box(const struct scene *s)
 {
 	struct aabb box = { { INFINITY, INFINITY, INFINITY }, { -INFINITY, -INFINITY, -INFINITY } };
@@ -30,8 +40,18 @@ struct aabb draw_scene_box(const struct scene *s)
 	for (i = 0; i < s->n_shapes; i++) {
 		struct aabb b;
 		shape_geometry(s->shapes[i], &g);
-		if (g.kind != RT_SHAPE_FLOOR && shape_bounds(s->shapes[i], &b))
+		if (g.kind == RT_SHAPE_FLOOR)
+			continue;
+		if (shape_bounds(s->shapes[i], &b)) {
 			box = aabb_union(box, b);
+		} else if (g.kind == RT_SHAPE_QUADRIC) {
+			/* A quadric clipped on some axes still has a place
+			 * along them. */
+			for (axis = 0; axis < 3; axis++)
+				if (g.u.quadric.clipped[axis])
+					box_include_axis(&box, axis, vec3_component(g.u.quadric.lo, axis),
+							 vec3_component(g.u.quadric.hi, axis));
+		}
 	}
 	for (i = 0; i < s->n_lights; i++) {
 		struct aabb b = { s->lights[i].pos, s->lights[i].pos };
@@ -42,14 +62,18 @@ struct aabb draw_scene_box(const struct scene *s)
 		box.max = vec3_make(100, 100, 100);
 	}
 	/* A flat box (one light, coplanar triangles) still needs a size. */
+	/* A box flat or empty along an axis (one light, coplanar triangles, a
+	 * quadric clipped on one axis only) still needs a size there. */
+	for (axis = 0; axis < 3; axis++) {
+		double lo = vec3_component(box.min, axis), hi = vec3_component(box.max, axis);
+		if (!(lo <= hi))
+			box_include_axis(&box, axis, 0.0, 0.0);
+	}
 	size = fmax(1.0, vec3_length(vec3_sub(box.max, box.min)));
 	for (axis = 0; axis < 3; axis++) {
-		double *lo = axis == 0 ? &box.min.x : axis == 1 ? &box.min.y : &box.min.z;
-		double *hi = axis == 0 ? &box.max.x : axis == 1 ? &box.max.y : &box.max.z;
-		if (*hi - *lo < 0.05 * size) {
-			*lo -= 0.025 * size;
-			*hi += 0.025 * size;
-		}
+		double lo = vec3_component(box.min, axis), hi = vec3_component(box.max, axis);
+		if (hi - lo < 0.05 * size)
+			box_include_axis(&box, axis, lo - 0.025 * size, hi + 0.025 * size);
 	}
 	return box;
 }
@@ -211,16 +235,18 @@ int draw_init(struct draw *dr, const struct scene *s, scene_note_fn *note, void 
 	      struct diag *d)
 {
 	struct aabb box = draw_scene_box(s), around;
-	struct vec3 pad;
+	struct vec3 e = vec3_sub(box.max, box.min), half;
 	GLint max_lights = 8;
 	size_t i;
 	int rc = 0;
 
 	memset(dr, 0, sizeof(*dr));
-	/* Unclipped quadrics reach a little beyond the objects and lights. */
-	pad = vec3_scale(vec3_sub(box.max, box.min), 0.25);
-	around.min = vec3_sub(box.min, pad);
-	around.max = vec3_add(box.max, pad);
+	/* Unclipped quadrics are drawn in a cube around the objects and
+	 * lights, half again as wide as the box's longest side: a surface
+	 * runs on past the scene, and a cone or hyperboloid spreads. */
+	half = vec3_scale(vec3_make(1, 1, 1), 0.75 * fmax(e.x, fmax(e.y, e.z)));
+	around.min = vec3_sub(aabb_centre(box), half);
+	around.max = vec3_add(aabb_centre(box), half);
 	dr->world = around;
 	for (i = 0; i < s->n_shapes; i++) {
 		struct aabb b;
