@@ -225,9 +225,9 @@ static int emit_shape(const struct shape *sh, const struct shape_geometry *g,
 	if (rc == 0 && m.n_vertices)
 		emit_mesh(&m);
 	mesh_free(&m);
+	/* The meshes can fail only for memory. */
 	if (rc < 0)
-		return diag_set(d, rc == -RT_E_NOMEM ? RT_E_NOMEM : RT_E_INVALID, "", 0, 0,
-				"out of memory for the shapes' meshes");
+		return diag_set(d, RT_E_NOMEM, "", 0, 0, "out of memory for the shapes' meshes");
 	return 0;
 }
 
