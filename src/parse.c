@@ -3,6 +3,7 @@
  * It stops at the first error with a located diagnostic and never prints;
  * notes go to the caller's callback. */
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -138,13 +139,15 @@ static int parser_int(struct parser *p, const char *what, long lo, long hi, long
 	parser_next(p);
 	if (!lexer_number(&p->last, &v))
 		return parser_not_a_number(p, "an integer", what);
-	if (v != (double)(long)v || v < -1e18 || v > 1e18) {
+	if (v != floor(v)) {
 		char found[64];
 		token_describe(&p->last, found, sizeof(found));
 		return parser_fail(p, RT_E_SYNTAX, "expected an integer (%s), found %s", what, found);
 	}
+	/* Checked before the conversion: a value outside a long (1e300) is
+	 * out of range, and converting it would be undefined. */
 	if (v < (double)lo || v > (double)hi)
-		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.0f",
+		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.17g",
 				   what, lo, hi, v);
 	*out = (long)v;
 	return 0;
