@@ -25,7 +25,7 @@ struct parser {
 	struct diag *d;
 	scene_note_fn *note;
 	void *note_ctx;
-	int notes_sent, notes_dropped;
+	int notes_sent, notes_dropped;	/* the notes about shapes, capped */
 };
 
 /* Quotes a token for a message: at most 40 bytes, unprintable bytes escaped. */
@@ -88,11 +88,6 @@ static void parser_note(struct parser *p, int line, const char *fmt, ...)
 
 	if (!p->note)
 		return;
-	if (p->notes_sent >= PARSE_MAX_NOTES) {
-		p->notes_dropped++;
-		return;
-	}
-	p->notes_sent++;
 	diag_clear(&note);
 	snprintf(note.file, sizeof(note.file), "%s", p->name);
 	note.line = line;
@@ -239,8 +234,12 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 	if (rc < 0)
 		return rc;
 	why = shape_degenerate(sh);
-	if (why)
+	if (why && p->notes_sent < PARSE_MAX_NOTES) {
+		p->notes_sent++;
 		parser_note(p, kw.line, "%s (object %ld) %s", ops->keyword, index, why);
+	} else if (why) {
+		p->notes_dropped++;
+	}
 	return scene_add_shape(s, sh, p->d);
 }
 
@@ -315,6 +314,8 @@ static int parse_scene(struct parser *p, struct scene *s)
 	for (i = 1; i <= objects; i++)
 		if ((rc = parse_object(p, s, i, objects)) < 0)
 			return rc;
+	if (p->notes_dropped > 0)
+		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	rc = parser_int(p, "light count", 0, RT_MAX_LIGHTS, &lights);
 	if (rc < 0) {
 		if (p->last.text && shape_ops_find(p->last.text, p->last.len))
@@ -327,8 +328,6 @@ static int parse_scene(struct parser *p, struct scene *s)
 	if ((rc = parse_lights(p, s, lights)) < 0)
 		return rc;
 	parse_trailing(p);
-	if (p->notes_dropped > 0)
-		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	return 0;
 }
 
