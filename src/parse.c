@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "hash.h"
 #include "lexer.h"
 #include "parse.h"
 #include "scene.h"
@@ -351,6 +352,7 @@ int scene_parse(const char *name, const char *text, size_t len,
 	s = scene_create(name);
 	if (!s)
 		return diag_set(d, RT_E_NOMEM, name, 0, 0, "out of memory");
+	s->source_hash = hash_bytes(RT_HASH_INIT, text, len);
 	rc = parse_scene(&p, s);
 	if (rc < 0) {
 		scene_destroy(s);
