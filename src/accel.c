@@ -479,10 +479,13 @@ static inline void ray_slab_init(struct ray_slab *rs, const struct ray *r)
 	rs->o[0] = r->origin.x;
 	rs->o[1] = r->origin.y;
 	rs->o[2] = r->origin.z;
-	rs->inv[0] = 1.0 / r->dir.x;
-	rs->inv[1] = 1.0 / r->dir.y;
-	rs->inv[2] = 1.0 / r->dir.z;
-	/* 1 / -0 is -inf: a direction of -0 counts as negative, as it must. */
+	/* Adding 0.0 turns -0 into +0, so that a zero component always
+	 * takes the minimum as its near plane.  (For a ray running along a
+	 * face of a box, one slab value is then NaN, which constrains
+	 * nothing, and the other +-inf on the side that keeps the ray.) */
+	rs->inv[0] = 1.0 / (r->dir.x + 0.0);
+	rs->inv[1] = 1.0 / (r->dir.y + 0.0);
+	rs->inv[2] = 1.0 / (r->dir.z + 0.0);
 	for (k = 0; k < 3; k++)
 		rs->near[k] = rs->inv[k] < 0.0;
 }

@@ -3,11 +3,13 @@
  * It stops at the first error with a located diagnostic and never prints;
  * notes go to the caller's callback. */
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "alloc.h"
+#include "hash.h"
 #include "lexer.h"
 #include "parse.h"
 #include "scene.h"
@@ -24,7 +26,7 @@ struct parser {
 	struct diag *d;
 	scene_note_fn *note;
 	void *note_ctx;
-	int notes_sent, notes_dropped;
+	int notes_sent, notes_dropped;	/* the notes about shapes, capped */
 };
 
 /* Quotes a token for a message: at most 40 bytes, unprintable bytes escaped. */
@@ -87,11 +89,6 @@ static void parser_note(struct parser *p, int line, const char *fmt, ...)
 
 	if (!p->note)
 		return;
-	if (p->notes_sent >= PARSE_MAX_NOTES) {
-		p->notes_dropped++;
-		return;
-	}
-	p->notes_sent++;
 	diag_clear(&note);
 	snprintf(note.file, sizeof(note.file), "%s", p->name);
 	note.line = line;
@@ -138,13 +135,15 @@ static int parser_int(struct parser *p, const char *what, long lo, long hi, long
 	parser_next(p);
 	if (!lexer_number(&p->last, &v))
 		return parser_not_a_number(p, "an integer", what);
-	if (v != (double)(long)v || v < -1e18 || v > 1e18) {
+	if (v != floor(v)) {
 		char found[64];
 		token_describe(&p->last, found, sizeof(found));
 		return parser_fail(p, RT_E_SYNTAX, "expected an integer (%s), found %s", what, found);
 	}
+	/* Checked before the conversion: a value outside a long (1e300) is
+	 * out of range, and converting it would be undefined. */
 	if (v < (double)lo || v > (double)hi)
-		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.0f",
+		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.17g",
 				   what, lo, hi, v);
 	*out = (long)v;
 	return 0;
@@ -236,8 +235,12 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 	if (rc < 0)
 		return rc;
 	why = shape_degenerate(sh);
-	if (why)
+	if (why && p->notes_sent < PARSE_MAX_NOTES) {
+		p->notes_sent++;
 		parser_note(p, kw.line, "%s (object %ld) %s", ops->keyword, index, why);
+	} else if (why) {
+		p->notes_dropped++;
+	}
 	return scene_add_shape(s, sh, p->d);
 }
 
@@ -312,6 +315,8 @@ static int parse_scene(struct parser *p, struct scene *s)
 	for (i = 1; i <= objects; i++)
 		if ((rc = parse_object(p, s, i, objects)) < 0)
 			return rc;
+	if (p->notes_dropped > 0)
+		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	rc = parser_int(p, "light count", 0, RT_MAX_LIGHTS, &lights);
 	if (rc < 0) {
 		if (p->last.text && shape_ops_find(p->last.text, p->last.len))
@@ -324,8 +329,6 @@ static int parse_scene(struct parser *p, struct scene *s)
 	if ((rc = parse_lights(p, s, lights)) < 0)
 		return rc;
 	parse_trailing(p);
-	if (p->notes_dropped > 0)
-		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	return 0;
 }
 
@@ -349,6 +352,7 @@ int scene_parse(const char *name, const char *text, size_t len,
 	s = scene_create(name);
 	if (!s)
 		return diag_set(d, RT_E_NOMEM, name, 0, 0, "out of memory");
+	s->source_hash = hash_bytes(RT_HASH_INIT, text, len);
 	rc = parse_scene(&p, s);
 	if (rc < 0) {
 		scene_destroy(s);
