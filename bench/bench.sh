@@ -9,7 +9,9 @@
 # CASES (default "example gen-1k gen-100k gen-1M"),
 # BENCH_DIR (build/bench-out), POV_1M=1 to time POV-Ray on 1M primitives too,
 # POV_EXPORT (default build/scene2pov): the exporter, called as
-# "$POV_EXPORT --finish plain -s SIZE -o OUT.pov SCENE".
+# "$POV_EXPORT --finish plain -q -s SIZE -o OUT.pov SCENE"; it writes OUT.ini
+# beside OUT.pov (size, no antialiasing, display off), and POV-Ray runs as
+# "povray OUT.ini +IOUT.pov +WT2".
 set -eu
 
 BUILD=${BUILD:-build}
@@ -74,8 +76,8 @@ bench() {
 		cat "$w.m" >>"$w.mems"
 		echo "$(rays_of "$w.err") / $(render_time_of "$w.err") / 1000000" | bc -l >>"$w.rps"
 		if [ "$pov" = yes ]; then
-			run_timed "$p" povray +I"$DIR/$name.pov" +O"$DIR/$name.pov.png" +W"$size" +H"$size" \
-				+WT"$THREADS" -A -D +FN -V -GA
+			run_timed "$p" povray "$DIR/$name.ini" +I"$DIR/$name.pov" +O"$DIR/$name.pov.png" \
+				+WT"$THREADS" -V -GA
 			cat "$p.t" >>"$p.times"
 		fi
 		i=$((i + 1))
