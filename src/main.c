@@ -480,12 +480,12 @@ static void print_stats(const struct scene *s, const struct ray_counts *rc, int 
 
 	getrusage(RUSAGE_SELF, &ru);
 	fprintf(stderr,
-		"scene:    %zu objects, %zu lights, %dx%d, recursion %d, %zu hierarchy nodes\n"
+		"scene:    %zu objects, %zu lights, %dx%d, recursion %d, %zu hierarchy nodes (%.1f MiB)\n"
 		"time:     parse %.3f s, build %.3f s, render %.3f s (%d threads), write %.3f s\n"
 		"rays:     %llu primary, %llu shadow, %llu reflection, %.2f M rays/s\n"
 		"memory:   %.1f MiB peak resident\n",
 		s->n_shapes, s->n_lights, s->image_size, s->image_size, s->recursion,
-		accel_node_count(s->accel), t_parse, t_build, t_render, threads, t_write,
+		accel_node_count(s->accel), accel_bytes(s->accel) / 1048576.0, t_parse, t_build, t_render, threads, t_write,
 		(unsigned long long)rc->primary, (unsigned long long)rc->shadow,
 		(unsigned long long)rc->reflection, t_render > 0 ? total / t_render * 1e-6 : 0.0,
 		ru.ru_maxrss / 1024.0);
