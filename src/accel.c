@@ -1,11 +1,13 @@
 /* A bounding volume hierarchy over the scene's bounded shapes, built top
  * down with a 16-bin surface area heuristic, plus a list of the unbounded
- * shapes that every ray tests.  A node is one 64-byte cache line holding
- * the boxes of both its children (float bounds rounded outwards, so they
- * never cut off a hit, stored child-interleaved so that one SSE2 operation
- * works on both) and what each child is: another node or a leaf's range of
- * shapes.  Traversal visits children nearest entry first, in the same order
- * as a one-box-per-node tree would, so equal-distance hits resolve alike. */
+ * shapes that every ray tests.  A node is 64 bytes: the boxes of both its
+ * children (float bounds rounded outwards, so they never cut off a hit,
+ * stored child-interleaved so that one SSE2 operation tests both; plain C
+ * elsewhere) and what each child is: another node, a leaf's one shape or a
+ * leaf's range of shapes.  Closest-hit traversal enters the nearer child
+ * first, in the same order as a tree with one box per node would, so
+ * equal-distance hits resolve alike; shadow rays stop at the first
+ * blocker.  Nothing here allocates or locks per ray. */
 #include <assert.h>
 #include <float.h>
 #include <math.h>
