@@ -104,6 +104,18 @@ bench() {
 	rm -f "$DIR/$name.png" "$DIR/$name.pov.png"
 }
 
+# How much of the machine is free: two busy threads take as long as one
+# when another program holds a core.
+spin_cpus() {
+	rt_t0=$(now)
+	"$WHITTED" -q -j 2 -s 768 -o "$DIR/spin.ppm" scenes/scene.txt
+	rt_t1=$(now)
+	"$WHITTED" -q -j 1 -s 768 -o "$DIR/spin.ppm" scenes/scene.txt
+	rt_t2=$(now)
+	printf '%.1f' "$(echo "($rt_t2 - $rt_t1) / ($rt_t1 - $rt_t0)" | bc -l)"
+}
+
+echo "machine: load average $(cut -d' ' -f1-3 /proc/loadavg) before the run; whitted -j2 runs $(spin_cpus)x as fast as -j1"
 echo "whitted $("$WHITTED" --version | cut -d' ' -f2), $(nproc) cores ($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1)), $THREADS threads each; POV-Ray: $( [ $have_pov = yes ] && povray --version 2>&1 | sed -n 's/^POV-Ray \([0-9.]*\).*/\1/p' | head -1 || echo "not run ($POV_EXPORT or povray missing)")"
 echo
 echo "| scene | size | runs | whitted s (median) | POV-Ray s (median) | POV/whitted | whitted M rays/s (render) | peak MiB | bytes/primitive beyond a 1-object scene |"
