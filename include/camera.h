@@ -22,6 +22,7 @@ struct camera {
 	struct vec3 eye;
 	struct vec3 forward, right, up;	/* orthonormal, right = forward x up */
 	double half_height;		/* tan(fov / 2) */
+	double pixel_scale;		/* 2 half_height / size: a pixel's width at distance 1 */
 	int size;			/* pixels per side */
 };
 

@@ -44,12 +44,14 @@ int camera_init(struct camera *c, const struct camera_params *p, int size, struc
 	c->eye = p->eye;
 	c->half_height = tan(p->fov_deg * pi / 360.0);
 	c->size = size;
+	/* Once here rather than a division for every pixel. */
+	c->pixel_scale = 2.0 * c->half_height / c->size;
 	return 0;
 }
 
 struct ray camera_ray(const struct camera *c, int px, int py)
 {
-	double scale = 2.0 * c->half_height / c->size;
+	double scale = c->pixel_scale;
 	double u = (px + 0.5) * scale - c->half_height;
 	double v = c->half_height - (py + 0.5) * scale;
 	struct ray r;
