@@ -30,6 +30,9 @@ static double render_specular_power(double rl, double shininess)
 	return shininess == 1.0 ? rl : pow(rl, shininess);
 }
 
+/* Lights handled together; see render_trace. */
+#define RENDER_LIGHT_BATCH 8
+
 static bool render_shadowed(const struct scene *s, struct vec3 p, struct vec3 l,
 			    double dist, double eps)
 {
@@ -50,7 +53,7 @@ struct color render_trace(const struct scene *s, const struct render_settings *r
 	struct vec3 p, n, refl;
 	struct color base, c;
 	double dn;
-	size_t i;
+	size_t i, i0;
 
 	if (!hit)
 		return color_make(0.0, 0.0, 0.0);
@@ -66,27 +69,38 @@ struct color render_trace(const struct scene *s, const struct render_settings *r
 	}
 	refl = vec3_add_scaled(r->dir, n, -2.0 * dn);
 	eps = render_offset(p);
-	for (i = 0; i < s->n_lights; i++) {
-		const struct light *light = &s->lights[i];
-		struct vec3 to_light = vec3_sub(light->pos, p);
-		double dist = vec3_length(to_light), nl, rl, k;
-		struct vec3 l;
+	for (i0 = 0; i0 < s->n_lights; i0 += RENDER_LIGHT_BATCH) {
+		size_t nb = s->n_lights - i0 < RENDER_LIGHT_BATCH ? s->n_lights - i0 : RENDER_LIGHT_BATCH;
+		struct vec3 l[RENDER_LIGHT_BATCH];
+		double dist[RENDER_LIGHT_BATCH], nl[RENDER_LIGHT_BATCH];
 
-		if (!(dist > eps))
-			continue;
-		l = vec3_scale(to_light, 1.0 / dist);
-		nl = vec3_dot(n, l);
-		if (nl <= 0.0)
-			continue;
-		if (counts)
-			counts->shadow++;
-		if (render_shadowed(s, p, l, dist, eps))
-			continue;
-		k = m->kd * nl;
-		rl = vec3_dot(refl, l);
-		if (rl > 0.0)
-			k += m->ks * render_specular_power(rl, m->shininess);
-		c = color_add(c, color_scale(color_mul(light->color, base), k));
+		/* The directions to a batch of lights first: their square roots
+		 * and divisions then overlap, where one light's used to wait for
+		 * the previous light's shadow ray.  (A light at the point gives
+		 * an infinite l here, which the test below never uses.) */
+		for (i = 0; i < nb; i++) {
+			struct vec3 to_light = vec3_sub(s->lights[i0 + i].pos, p);
+			dist[i] = vec3_length(to_light);
+			l[i] = vec3_scale(to_light, 1.0 / dist[i]);
+			nl[i] = vec3_dot(n, l[i]);
+		}
+		for (i = 0; i < nb; i++) {
+			double rl, k;
+
+			if (!(dist[i] > eps))
+				continue;
+			if (nl[i] <= 0.0)
+				continue;
+			if (counts)
+				counts->shadow++;
+			if (render_shadowed(s, p, l[i], dist[i], eps))
+				continue;
+			k = m->kd * nl[i];
+			rl = vec3_dot(refl, l[i]);
+			if (rl > 0.0)
+				k += m->ks * render_specular_power(rl, m->shininess);
+			c = color_add(c, color_scale(color_mul(s->lights[i0 + i].color, base), k));
+		}
 	}
 	if (level < rs->recursion && m->kr > 0.0) {
 		struct ray bounce;
