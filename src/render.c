@@ -177,9 +177,15 @@ static void render_tile(const struct render_job *job, struct image *img, long ti
 
 	for (y = ty0; y < ty1; y++) {
 		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
+		struct ray next = camera_ray(job->camera, tx0, y);
 		for (x = tx0; x < tx1; x++) {
-			struct ray r = camera_ray(job->camera, x, y);
+			struct ray r = next;
 			struct color c;
+			/* The next pixel's ray is made before this one is traced:
+			 * its square root and division then run beside the trace
+			 * instead of holding up the next one. */
+			if (x + 1 < tx1)
+				next = camera_ray(job->camera, x + 1, y);
 			counts->primary++;
 			c = render_trace(job->scene, &job->settings, &r, 1, counts);
 			render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
