@@ -3,6 +3,7 @@
  * It stops at the first error with a located diagnostic and never prints;
  * notes go to the caller's callback. */
 #include <ctype.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -133,19 +134,19 @@ int parser_number(struct parser *p, const char *what, double *out)
 /* An integer in [lo, hi]; integral reals such as "4.0" are accepted. */
 static int parser_int(struct parser *p, const char *what, long lo, long hi, long *out)
 {
+	char found[64];
 	double v;
 
 	parser_next(p);
 	if (!lexer_number(&p->last, &v))
 		return parser_not_a_number(p, "an integer", what);
-	if (v != (double)(long)v || v < -1e18 || v > 1e18) {
-		char found[64];
-		token_describe(&p->last, found, sizeof(found));
+	token_describe(&p->last, found, sizeof(found));
+	/* Range first: converting a double outside long's range is undefined. */
+	if (v != floor(v))
 		return parser_fail(p, RT_E_SYNTAX, "expected an integer (%s), found %s", what, found);
-	}
 	if (v < (double)lo || v > (double)hi)
-		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.0f",
-				   what, lo, hi, v);
+		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %s",
+				   what, lo, hi, found);
 	*out = (long)v;
 	return 0;
 }
