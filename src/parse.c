@@ -265,6 +265,20 @@ static int parse_lights(struct parser *p, struct scene *s, long count)
 	long i;
 	int rc;
 
+	if (available < 6 * count && !positions_only) {
+		double v;
+		/* Read what is there, so that a bad number is reported as such,
+		 * then locate the error where the numbers run out. */
+		for (i = 0; i < available; i++)
+			if ((rc = parser_number(p, "light position or colour", &v)) < 0)
+				return rc;
+		parser_next(p);
+		return parser_fail(p, RT_E_SYNTAX,
+				   "%ld light%s need %ld numbers (or %ld for positions only), found %ld "
+				   "(does the light count match the lights?)",
+				   count, count == 1 ? "" : "s", 6 * count, 3 * count, available);
+	}
+
 	for (i = 0; i < count; i++) {
 		struct vec3 pos;
 		struct color color = { 1.0, 1.0, 1.0 };
@@ -297,9 +311,15 @@ static void parse_trailing(struct parser *p)
 
 static int parse_scene(struct parser *p, struct scene *s)
 {
+	struct lexer ahead = p->lx;
+	struct token first = lexer_next(&ahead);
 	long recursion, size, objects, lights, i;
 	int rc;
 
+	if (!first.text)
+		return diag_set(p->d, RT_E_SYNTAX, p->name, first.line, first.col, "%s",
+				p->len > 0 ? "the file has no data, only space and comments"
+					   : "the file is empty");
 	if ((rc = parser_int(p, "recursion level", 1, RT_MAX_RECURSION, &recursion)) < 0 ||
 	    (rc = parser_int(p, "image size", 1, RT_MAX_IMAGE_SIZE, &size)) < 0)
 		return rc;
@@ -339,6 +359,9 @@ int scene_parse(const char *name, const char *text, size_t len,
 	int rc;
 
 	*out = NULL;
+	if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+		return diag_set(d, RT_E_SYNTAX, name, 1, 1,
+				"the file starts with a UTF-8 byte order mark; save it as plain text without one");
 	memset(&p, 0, sizeof(p));
 	lexer_init(&p.lx, text, len);
 	p.name = name;
