@@ -274,9 +274,9 @@ static int parse_lights(struct parser *p, struct scene *s, long count)
 				return rc;
 		parser_next(p);
 		return parser_fail(p, RT_E_SYNTAX,
-				   "%ld light%s need %ld numbers (or %ld for positions only), found %ld "
+				   "%ld light%s %ld numbers (or %ld for positions only), found %ld "
 				   "(does the light count match the lights?)",
-				   count, count == 1 ? "" : "s", 6 * count, 3 * count, available);
+				   count, count == 1 ? " needs" : "s need", 6 * count, 3 * count, available);
 	}
 
 	for (i = 0; i < count; i++) {
