@@ -3,6 +3,7 @@
 #define RT_IMAGE_H
 
 #include <signal.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -40,5 +41,10 @@ int image_write_ppm(const struct image *img, FILE *f, struct diag *d);
  * RT_E_INTERRUPTED and leaves nothing behind. */
 int image_write(const struct image *img, const char *path, enum image_format fmt,
 		const volatile sig_atomic_t *cancel, struct diag *d);
+
+/* True when image_write writes path in place rather than through a
+ * temporary file: an existing non-regular file (a pipe, a device) or a path
+ * under /dev/ or /proc/ (/dev/stdout, /dev/fd/N, /proc/self/fd/N). */
+bool image_path_is_direct(const char *path);
 
 #endif

@@ -101,6 +101,18 @@ static int image_write_direct(const struct image *img, const char *path,
 	return rc;
 }
 
+bool image_path_is_direct(const char *path)
+{
+	struct stat st;
+
+	/* /dev/stdout is a symbolic link to the descriptor, whose file may be
+	 * regular: a temporary file in /dev renamed over the link would
+	 * replace /dev/stdout itself. */
+	if (strncmp(path, "/dev/", 5) == 0 || strncmp(path, "/proc/", 6) == 0)
+		return true;
+	return stat(path, &st) == 0 && !S_ISREG(st.st_mode);
+}
+
 int image_write(const struct image *img, const char *path, enum image_format fmt,
 		const volatile sig_atomic_t *cancel, struct diag *d)
 {
@@ -112,6 +124,8 @@ int image_write(const struct image *img, const char *path, enum image_format fmt
 	FILE *f;
 	int fd, rc;
 
+	if (image_path_is_direct(path))
+		return image_write_direct(img, path, fmt, d);
 	if (stat(path, &st) == 0) {
 		if (!S_ISREG(st.st_mode))
 			return image_write_direct(img, path, fmt, d);

@@ -248,6 +248,8 @@ static int check_output_dir(const char *path, struct diag *d)
 	const char *slash = strrchr(path, '/');
 	char dir[4096];
 
+	if (image_path_is_direct(path))
+		return 0;
 	if (!slash)
 		snprintf(dir, sizeof(dir), ".");
 	else if (slash == path)
