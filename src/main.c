@@ -139,7 +139,7 @@ static int parse_args(int argc, char **argv, struct options *o)
 	cli_scene_init(&o->scene);
 	o->threads = cli_default_threads();
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, CLI_SCENE_SHORT "o:j:hV", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":" CLI_SCENE_SHORT "o:j:hV", longopts, NULL)) != -1) {
 		diag_clear(&d);
 		rc = cli_scene_option(&o->scene, c, optarg, &d);
 		if (rc < 0)
