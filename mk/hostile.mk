@@ -1,4 +1,6 @@
 # Hostile input: the error-file and CLI tests, valgrind, the fuzz harness.
+#   make faults       output faults: missing and read-only directories, a
+#                     file-size limit, a full device, SIGINT and SIGTERM
 #   make fuzz         builds the libFuzzer target with clang and runs it for
 #                     FUZZ_SECONDS (default 600) on tests/fuzz/corpus
 #   make fuzz-replay  runs every corpus file through the same harness, built
@@ -11,9 +13,12 @@ FUZZ_FLAGS := -std=c99 -g -O1 -Iinclude $(PNG_CFLAGS) -pthread \
 FUZZ_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/%.o)
 
 CHECK_PKGS += valgrind clang libclang-rt-14-dev
-CHECK_TARGETS += fuzz-replay
+CHECK_TARGETS += faults fuzz-replay
 
-.PHONY: fuzz fuzz-replay
+.PHONY: fuzz fuzz-replay faults
+faults: all
+	@tests/cli/faults.sh
+
 $(FUZZ_DIR)/%.o: %.c
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@

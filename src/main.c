@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -246,6 +247,7 @@ static void show_progress(void *ctx, long done, long total)
 static int check_output_dir(const char *path, struct diag *d)
 {
 	const char *slash = strrchr(path, '/');
+	struct stat st;
 	char dir[4096];
 
 	if (image_path_is_direct(path))
@@ -256,6 +258,8 @@ static int check_output_dir(const char *path, struct diag *d)
 		snprintf(dir, sizeof(dir), "/");
 	else
 		snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
+	if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
+		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(ENOTDIR));
 	if (access(dir, W_OK | X_OK) != 0)
 		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	return 0;
@@ -331,7 +335,9 @@ static int run(struct options *o)
 	status = 0;
 out:
 	if (rc < 0) {
-		if (rc == -RT_E_INTERRUPTED)
+		/* A signal that interrupted a system call (opening a FIFO that
+		 * nobody reads) shows as an I/O error: the status names the signal. */
+		if (rc == -RT_E_INTERRUPTED || cancelled)
 			status = 128 + (int)cancelled;
 		if (job.progress)
 			fputc('\n', stderr);
