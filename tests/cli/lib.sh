@@ -1,7 +1,7 @@
 # Shared helpers of the CLI test scripts (sourced, not run).  Sets ROOT,
 # SHARED, W (the whitted binary) and T (a scratch directory removed on exit),
 # and counts checks: ok NAME / bad NAME WHY, then finish prints the summary.
-ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 SHARED=$ROOT/../shared
 W=$ROOT/build/whitted
 pass=0
