@@ -178,6 +178,36 @@ n_files=$(ls "$ERRORS"/*.txt | wc -l)
 check "errors: every file is in expected.tsv" [ "$n_err" -eq "$n_files" ]
 check "errors: at least 50 files" [ "$n_files" -ge 50 ]
 
+# Hostile files: each is refused quickly (timeout) within a memory limit
+# (ulimit -v), with one located line and no output.
+hostile() {
+	local name=$1 pattern=$2 file=$3
+	clean_wd
+	(ulimit -v 1000000 && cd "$T/wd" && exec timeout 20 "$W" -s 8 -o x.png "$file") >"$T/out" 2>"$T/err"
+	rc=$?
+	if [ "$rc" -ne 1 ]; then bad "hostile $name" "exit $rc: $(cat "$T/err")"
+	elif [ "$(err_lines)" -ne 1 ]; then bad "hostile $name" "$(err_lines) stderr lines"
+	elif ! grep -qE -- "$pattern" "$T/err"; then bad "hostile $name" "stderr does not match $pattern: $(cat "$T/err")"
+	elif ! wd_empty; then bad "hostile $name" "left files: $(wd_files)"
+	else ok
+	fi
+}
+head -c 10000000 /dev/zero | tr '\0' 7 >"$T/token.txt"
+hostile "10 MB single token" 'token\.txt:1:1: error: token too long' "$T/token.txt"
+hostile "binary file" '^.*/whitted:1:1: error: expected an integer \(recursion level\)' "$W"
+truncate -s 300M "$T/sparse.txt"
+hostile "300 MiB file (sparse) refused by size" 'sparse\.txt: error: the file is larger than the limit of 268435456 bytes' "$T/sparse.txt"
+rm -f "$T/sparse.txt"
+yes '# a comment' | head -n 1000000 >"$T/comments.txt"
+hostile "a million comment lines" 'comments\.txt:1000001:1: error: the file has no data' "$T/comments.txt"
+printf '4\n16\n10000000\nsphere 0 0 10 1 1 1 1 0 0 0 0 0\n' >"$T/count.txt"
+hostile "object count of ten million, one object" 'count\.txt:5:1: error: expected an object keyword .* for object 2 of 10000000, found end of file' "$T/count.txt"
+printf '4\n16\n0\n100000\n0 0 100\n' >"$T/lights.txt"
+hostile "light count of 100000, one light" 'lights\.txt:6:1: error: 100000 lights need 600000 numbers' "$T/lights.txt"
+hostile "scene from /dev/zero" '^/dev/zero: error: the file is larger than the limit' /dev/zero
+hostile "scene is /dev/null" '^/dev/null:1:1: error: the file is empty' /dev/null
+rm -f "$T/token.txt" "$T/comments.txt"
+
 # Default output name: SCENE's base name with .png, in the current directory.
 default_name() {
 	local scene=$1 want=$2
