@@ -9,13 +9,14 @@ FUZZ_SECONDS ?= 600
 FUZZ_CC ?= clang
 FUZZ_DIR := $(BUILD)/fuzz
 FUZZ_FLAGS := -std=c99 -g -O1 -Iinclude $(PNG_CFLAGS) -pthread \
-	-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+	-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -MMD -MP
 FUZZ_OBJ := $(LIB_SRC:%.c=$(FUZZ_DIR)/%.o)
 
-CHECK_PKGS += valgrind clang libclang-rt-14-dev
 CHECK_TARGETS += faults fuzz-replay
 
-.PHONY: fuzz fuzz-replay faults
+.PHONY: fuzz fuzz-replay faults fuzz-cc-check
+fuzz-cc-check:
+	@command -v $(FUZZ_CC) >/dev/null || { echo "fuzz: $(FUZZ_CC) is missing (Debian: clang libclang-rt-14-dev)"; exit 1; }
 faults: all
 	@tests/cli/faults.sh
 
@@ -40,7 +41,7 @@ $(BUILD)/replay/fuzz_replay: tests/fuzz/replay.c tests/fuzz/harness.c tests/fuzz
 	$(CC) $(ALL_CFLAGS) -O1 $(REPLAY_SAN) -Itests/fuzz -o $@ tests/fuzz/replay.c tests/fuzz/harness.c \
 		$(REPLAY_OBJ) $(LDLIBS)
 
-fuzz: $(FUZZ_DIR)/fuzz_scene
+fuzz: fuzz-cc-check $(FUZZ_DIR)/fuzz_scene
 	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/artifacts
 	$(FUZZ_DIR)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) \
 		-dict=tests/fuzz/scene.dict -max_len=4096 -timeout=10 -rss_limit_mb=2048 \

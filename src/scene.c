@@ -120,7 +120,8 @@ static int scene_read_stream(FILE *f, const char *path, char **out, size_t *out_
 				return diag_set(d, RT_E_RANGE, path, 0, 0,
 						"the file is larger than the limit of %ld bytes",
 						RT_MAX_SCENE_BYTES);
-			cap = (size_t)st.st_size + 1;
+			if ((size_t)st.st_size >= cap)
+				cap = (size_t)st.st_size + 1;
 		}
 	}
 	buf = rt_malloc(cap);
