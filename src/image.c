@@ -137,7 +137,9 @@ int image_write(const struct image *img, const char *path, enum image_format fmt
 	if (!tmp)
 		return diag_set(d, RT_E_NOMEM, "", 0, 0, "out of memory");
 	memcpy(tmp, path, dir_len);
-	sprintf(tmp + dir_len, ".%s.XXXXXX", path + dir_len);
+	/* At most 200 bytes of the name, so that the temporary name fits in
+	 * NAME_MAX (255) whenever the output's name does. */
+	sprintf(tmp + dir_len, ".%.200s.XXXXXX", path + dir_len);
 	fd = mkstemp(tmp);
 	if (fd < 0) {
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));

@@ -350,7 +350,7 @@ out:
 
 int main(int argc, char **argv)
 {
-	struct sigaction sa;
+	struct sigaction sa, old_sa;
 	struct options o;
 	int status;
 
@@ -364,6 +364,10 @@ int main(int argc, char **argv)
 	sigemptyset(&sa.sa_mask);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
+	/* A closed terminal stops the render cleanly too, unless the hang-up
+	 * is ignored (nohup). */
+	if (sigaction(SIGHUP, NULL, &old_sa) == 0 && old_sa.sa_handler != SIG_IGN)
+		sigaction(SIGHUP, &sa, NULL);
 	/* A file-size limit then fails the write with EFBIG instead of killing
 	 * us with a temporary file left behind. */
 	signal(SIGXFSZ, SIG_IGN);

@@ -47,6 +47,21 @@ check "dir is a file exit" [ "$rc" -eq 1 ]
 check "dir is a file message" grep -qx 'plain/x.png: error: cannot write: Not a directory' "$T/err"
 check "dir is a file untouched" [ "$(cat "$T/wd/plain")" = 'a file' ]
 
+# The output is a directory.
+clean_wd
+mkdir "$T/wd/d.png"
+run -s 8 -o d.png "$SCENE"
+check "output is a directory exit" [ "$rc" -eq 1 ]
+check "output is a directory message" grep -qx 'd.png: error: cannot write: Is a directory' "$T/err"
+check "output is a directory kept" [ -d "$T/wd/d.png" -a "$(wd_files)" = d.png ]
+# A 254-byte name is valid; its temporary name must be too.
+clean_wd
+long=$(printf 'a%.0s' $(seq 250)).png
+run -s 8 -o "$long" "$SCENE"
+check "254-byte output name" [ "$rc" -eq 0 -a "$(wd_files)" = "$long" ]
+run -s 8 -o "aa$long" "$SCENE"
+check "256-byte output name fails" [ "$rc" -eq 1 -a "$(wd_files)" = "$long" ]
+
 # A read-only directory.  Root ignores permissions, so as root the check
 # runs as the user nobody (setpriv); without a way to drop privileges it
 # is reported as not run (and not counted as passed).
@@ -133,9 +148,11 @@ signal_test() {
 	local pid=$!
 	sleep 0.3
 	kill -s "$sig" $pid
+	local sent=$?
 	wait $pid
 	rc=$?
 	local what="$sig (existing: $existing)"
+	check "$what sent during the render" [ "$sent" -eq 0 ]
 	check "$what exit $want" [ "$rc" -eq "$want" ]
 	check "$what one message" [ "$(err_lines)" -eq 1 ]
 	check "$what message" grep -qx 'whitted: error: interrupted' "$T/err"
@@ -150,6 +167,18 @@ signal_test INT 130 no
 signal_test TERM 143 no
 signal_test INT 130 yes
 signal_test TERM 143 yes
+signal_test HUP 129 no
+# Under nohup a hang-up is ignored and the render completes.
+rm -rf "$T/sig" && mkdir -p "$T/sig"
+(cd "$T/sig" && exec nohup "$W" -s 2000 -o big.png "$SCENE") >/dev/null 2>&1 &
+pid=$!
+sleep 0.3
+kill -s HUP $pid
+sent=$?
+wait $pid
+rc=$?
+check "HUP under nohup sent during the render" [ "$sent" -eq 0 ]
+check "HUP under nohup completes" [ "$rc" -eq 0 -a -f "$T/sig/big.png" ]
 
 # A signal while blocked opening a FIFO that nobody reads: the write is
 # interrupted, and the exit status still says which signal it was.
@@ -158,6 +187,7 @@ rm -rf "$T/ff" && mkdir -p "$T/ff" && mkfifo "$T/ff/out.ppm"
 pid=$!
 sleep 0.5
 kill -s TERM $pid
+check "TERM while opening a FIFO sent" [ $? -eq 0 ]
 wait $pid
 rc=$?
 check "TERM while opening a FIFO exit 143" [ "$rc" -eq 143 ]
