@@ -208,6 +208,14 @@ hostile "scene from /dev/zero" '^/dev/zero: error: the file is larger than the l
 hostile "scene is /dev/null" '^/dev/null:1:1: error: the file is empty' /dev/null
 rm -f "$T/token.txt" "$T/comments.txt"
 
+# A long path (over 256 bytes) is named whole in the message.
+long=$T/$(printf 'd%.0s' $(seq 200))/$(printf 'e%.0s' $(seq 200))
+mkdir -p "$long"
+cp "$ERRORS/nan.txt" "$long/x.txt"
+run -s 8 -o x.png "$long/x.txt"
+check "long scene path named whole" grep -q "^$long/x.txt:1:1: error: " "$T/err"
+rm -rf "$T/$(printf 'd%.0s' $(seq 200))"
+
 # Default output name: SCENE's base name with .png, in the current directory.
 default_name() {
 	local scene=$1 want=$2
