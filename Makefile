@@ -20,6 +20,8 @@ SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recove
 
 CORE_PKGS := build-essential pkg-config libpng-dev libcmocka-dev
 CHECK_PKGS := $(CORE_PKGS) valgrind
+# Needed by some suites only; installed as root, otherwise those say NOT RUN.
+OPTIONAL_PKGS :=
 
 LIB_SRC := $(filter-out src/main.c,$(wildcard src/*.c)) $(wildcard src/shapes/*.c)
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
@@ -28,7 +30,8 @@ TEST_SRC := $(wildcard tests/test_*.c) $(wildcard tests/shapes/test_*.c)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/san/tests/%)
 
 # Each part of the project adds its own targets in mk/NAME.mk: programs to
-# ALL_TARGETS, Debian packages to CHECK_PKGS, and the test targets that
+# ALL_TARGETS, Debian packages to CHECK_PKGS (or OPTIONAL_PKGS when their
+# tests can say NOT RUN without them), and the test targets that
 # `make check` runs, in order, to CHECK_TARGETS.
 ALL_TARGETS := $(BUILD)/libwhitted.a $(BUILD)/whitted
 INSTALL_PROGRAMS := whitted
@@ -66,11 +69,9 @@ $(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/tests/support.o $(BUIL
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ -lcmocka $(LDLIBS)
 
-deps:
+deps check-deps:
 	@scripts/deps.sh $(CHECK_PKGS)
-
-check-deps:
-	@scripts/deps.sh $(CHECK_PKGS)
+	@scripts/deps.sh --optional $(OPTIONAL_PKGS)
 
 render:
 	@scripts/deps.sh $(CORE_PKGS)
@@ -94,7 +95,6 @@ check: check-deps
 
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/whitted
-	install -m 755 $(BUILD)/whitted $(DESTDIR)$(PREFIX)/bin/whitted
 	for p in $(INSTALL_PROGRAMS); do install -m 755 $(BUILD)/$$p $(DESTDIR)$(PREFIX)/bin/$$p; done
 	install -m 644 $(BUILD)/libwhitted.a $(DESTDIR)$(PREFIX)/lib/libwhitted.a
 	cp -R include/. $(DESTDIR)$(PREFIX)/include/whitted/

@@ -42,6 +42,14 @@ int image_write_ppm(const struct image *img, FILE *f, struct diag *d);
 int image_write(const struct image *img, const char *path, enum image_format fmt,
 		const volatile sig_atomic_t *cancel, struct diag *d);
 
+/* Writes a file's contents to a stream, for image_write_file. */
+typedef int image_fill_fn(void *ctx, FILE *f, struct diag *d);
+
+/* Writes whatever fill writes to path, with the same safety as
+ * image_write (which is this with an image writer as fill). */
+int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
+		     const volatile sig_atomic_t *cancel, struct diag *d);
+
 /* True when image_write writes path in place rather than through a
  * temporary file: an existing non-regular file (a pipe, a device) or a path
  * under /dev/ or /proc/ (/dev/stdout, /dev/fd/N, /proc/self/fd/N). */

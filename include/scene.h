@@ -5,6 +5,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "diag.h"
 #include "material.h"
@@ -39,6 +40,9 @@ struct scene {
 	struct light *lights;
 	size_t n_lights, cap_lights;
 	struct accel *accel;		/* built by scene_prepare */
+	/* hash_bytes of the scene text as read, so that region renders can
+	 * tell whether they come from the same file. */
+	uint64_t source_hash;
 };
 
 /* Receives notes (trailing text, degenerate shapes) during loading. */

@@ -16,6 +16,37 @@ struct parser;
 struct shape;
 struct pov_options;
 
+/* What a shape is, in the numbers of its scene-file entry, for tools that
+ * draw shapes themselves (the OpenGL viewer) rather than trace them. */
+enum shape_kind {
+	RT_SHAPE_OTHER = 0,	/* no description: a primitive without the method */
+	RT_SHAPE_SPHERE,
+	RT_SHAPE_TRIANGLE,
+	RT_SHAPE_QUADRIC,
+	RT_SHAPE_FLOOR,
+};
+
+struct shape_geometry {
+	enum shape_kind kind;
+	union {
+		struct {
+			struct vec3 centre;
+			double radius;
+		} sphere;
+		struct {
+			struct vec3 v[3];
+		} triangle;
+		struct {
+			double coef[10];	/* A..J of scene-format.md */
+			struct vec3 lo, hi;	/* the clip box */
+			bool clipped[3];	/* false: that axis is not clipped */
+		} quadric;
+		struct {
+			double width, tile;	/* centred on the origin, z = 0 */
+		} floor;
+	} u;
+};
+
 struct shape_ops {
 	const char *keyword;	/* scene-file keyword, unique */
 
@@ -41,6 +72,8 @@ struct shape_ops {
 	/* Optional.  A line for the scene's notes when the shape can never be
 	 * seen (a degenerate triangle); NULL when it is fine. */
 	const char *(*degenerate)(const struct shape *s);
+	/* Optional.  NULL: described as RT_SHAPE_OTHER. */
+	void (*geometry)(const struct shape *s, struct shape_geometry *out);
 };
 
 struct shape {
@@ -62,6 +95,7 @@ static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
 struct color shape_color_at(const struct shape *s, struct vec3 p);
 bool shape_bounds(const struct shape *s, struct aabb *out);
 const char *shape_degenerate(const struct shape *s);
+void shape_geometry(const struct shape *s, struct shape_geometry *out);
 int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt);
 void shape_destroy(struct shape *s);
 

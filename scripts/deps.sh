@@ -1,7 +1,14 @@
 #!/bin/sh
 # Installs the Debian packages a make target needs, when some are missing:
 # with apt-get when run as root, otherwise by printing the command to run.
-# Usage: scripts/deps.sh PACKAGE...
+# Usage: scripts/deps.sh [--optional] PACKAGE...
+# With --optional, a user who is not root is only told what is missing: the
+# tests that need those packages then say NOT RUN.
+optional=no
+if [ "${1:-}" = --optional ]; then
+	optional=yes
+	shift
+fi
 missing=""
 for pkg in "$@"; do
 	status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null)
@@ -16,6 +23,11 @@ if [ "$(id -u)" = 0 ]; then
 	export DEBIAN_FRONTEND=noninteractive
 	apt-get update -qq >/dev/null && apt-get install -y -qq --no-install-recommends $missing >/dev/null ||
 		{ echo "deps: apt-get install$missing failed" >&2; exit 1; }
+	exit 0
+fi
+if [ "$optional" = yes ]; then
+	echo "deps: optional packages missing (their tests will say NOT RUN); as root:" >&2
+	echo "  apt-get install -y$missing" >&2
 	exit 0
 fi
 echo "deps: missing Debian packages; run as root:" >&2

@@ -311,9 +311,13 @@ static void ray_slab_init(struct ray_slab *rs, const struct ray *r)
 	rs->o[0] = r->origin.x;
 	rs->o[1] = r->origin.y;
 	rs->o[2] = r->origin.z;
-	rs->inv[0] = 1.0 / r->dir.x;
-	rs->inv[1] = 1.0 / r->dir.y;
-	rs->inv[2] = 1.0 / r->dir.z;
+	/* Adding 0.0 turns -0 into +0.  For a ray running along a face of a
+	 * box, 1 / -0 = -inf makes that slab (NaN, -inf) or (+inf, NaN), which
+	 * cuts the ray off; 1 / +0 makes it (NaN, +inf) or (-inf, NaN), which
+	 * leaves the ray alone, as the inclusive box requires. */
+	rs->inv[0] = 1.0 / (r->dir.x + 0.0);
+	rs->inv[1] = 1.0 / (r->dir.y + 0.0);
+	rs->inv[2] = 1.0 / (r->dir.z + 0.0);
 }
 
 /* The entry distance of the ray into the node's box within (t_min, t_max),

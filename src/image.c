@@ -85,15 +85,15 @@ static bool image_cancelled(const volatile sig_atomic_t *cancel)
 }
 
 /* Writes to a non-regular file (a pipe, a terminal, a device) in place. */
-static int image_write_direct(const struct image *img, const char *path,
-			      enum image_format fmt, struct diag *d)
+static int image_write_direct(const char *path, image_fill_fn *fill, void *ctx,
+			      struct diag *d)
 {
 	FILE *f = fopen(path, "wb");
 	int rc;
 
 	if (!f)
 		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
-	rc = image_write_stream(img, f, fmt, d);
+	rc = fill(ctx, f, d);
 	if (fclose(f) != 0 && rc == 0)
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	if (rc < 0 && d->file[0] == '\0')
@@ -113,8 +113,30 @@ bool image_path_is_direct(const char *path)
 	return stat(path, &st) == 0 && !S_ISREG(st.st_mode);
 }
 
+struct image_fill_ctx {
+	const struct image *img;
+	enum image_format fmt;
+};
+
+static int image_fill(void *ctx, FILE *f, struct diag *d)
+{
+	const struct image_fill_ctx *c = ctx;
+
+	return image_write_stream(c->img, f, c->fmt, d);
+}
+
 int image_write(const struct image *img, const char *path, enum image_format fmt,
 		const volatile sig_atomic_t *cancel, struct diag *d)
+{
+	struct image_fill_ctx c;
+
+	c.img = img;
+	c.fmt = fmt;
+	return image_write_file(path, image_fill, &c, cancel, d);
+}
+
+int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
+		     const volatile sig_atomic_t *cancel, struct diag *d)
 {
 	const char *slash = strrchr(path, '/');
 	size_t dir_len = slash ? (size_t)(slash - path) + 1 : 0;
@@ -125,10 +147,10 @@ int image_write(const struct image *img, const char *path, enum image_format fmt
 	int fd, rc;
 
 	if (image_path_is_direct(path))
-		return image_write_direct(img, path, fmt, d);
+		return image_write_direct(path, fill, ctx, d);
 	if (stat(path, &st) == 0) {
 		if (!S_ISREG(st.st_mode))
-			return image_write_direct(img, path, fmt, d);
+			return image_write_direct(path, fill, ctx, d);
 		mode = st.st_mode & 07777;
 	} else {
 		mode = image_new_file_mode();
@@ -151,7 +173,7 @@ int image_write(const struct image *img, const char *path, enum image_format fmt
 		close(fd);
 		goto out_unlink;
 	}
-	rc = image_write_stream(img, f, fmt, d);
+	rc = fill(ctx, f, d);
 	if (rc == 0 && fflush(f) != 0)
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	if (rc == 0 && fchmod(fd, mode) != 0)

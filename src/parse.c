@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "hash.h"
 #include "lexer.h"
 #include "parse.h"
 #include "scene.h"
@@ -25,7 +26,7 @@ struct parser {
 	struct diag *d;
 	scene_note_fn *note;
 	void *note_ctx;
-	int notes_sent, notes_dropped;
+	int notes_sent, notes_dropped;	/* the notes about shapes, capped */
 };
 
 /* Quotes a token for a message: at most 40 bytes, unprintable bytes escaped. */
@@ -88,11 +89,6 @@ static void parser_note(struct parser *p, int line, const char *fmt, ...)
 
 	if (!p->note)
 		return;
-	if (p->notes_sent >= PARSE_MAX_NOTES) {
-		p->notes_dropped++;
-		return;
-	}
-	p->notes_sent++;
 	diag_clear(&note);
 	snprintf(note.file, sizeof(note.file), "%s", p->name);
 	note.line = line;
@@ -134,19 +130,21 @@ int parser_number(struct parser *p, const char *what, double *out)
 /* An integer in [lo, hi]; integral reals such as "4.0" are accepted. */
 static int parser_int(struct parser *p, const char *what, long lo, long hi, long *out)
 {
-	char found[64];
 	double v;
 
 	parser_next(p);
 	if (!lexer_number(&p->last, &v))
 		return parser_not_a_number(p, "an integer", what);
-	token_describe(&p->last, found, sizeof(found));
-	/* Range first: converting a double outside long's range is undefined. */
-	if (v != floor(v))
+	if (v != floor(v)) {
+		char found[64];
+		token_describe(&p->last, found, sizeof(found));
 		return parser_fail(p, RT_E_SYNTAX, "expected an integer (%s), found %s", what, found);
+	}
+	/* Checked before the conversion: a value outside a long (1e300) is
+	 * out of range, and converting it would be undefined. */
 	if (v < (double)lo || v > (double)hi)
-		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %s",
-				   what, lo, hi, found);
+		return parser_fail(p, RT_E_RANGE, "%s must be between %ld and %ld, found %.17g",
+				   what, lo, hi, v);
 	*out = (long)v;
 	return 0;
 }
@@ -237,8 +235,12 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 	if (rc < 0)
 		return rc;
 	why = shape_degenerate(sh);
-	if (why)
+	if (why && p->notes_sent < PARSE_MAX_NOTES) {
+		p->notes_sent++;
 		parser_note(p, kw.line, "%s (object %ld) %s", ops->keyword, index, why);
+	} else if (why) {
+		p->notes_dropped++;
+	}
 	return scene_add_shape(s, sh, p->d);
 }
 
@@ -258,6 +260,23 @@ static long parser_count_numbers(const struct parser *p, long limit)
 	return n;
 }
 
+/* Adds to a light's error, when the numbers after the light count fit
+ * neither 6 nor 3 per light, how many there are: the count is the likely
+ * culprit. */
+static int parser_light_count_hint(struct parser *p, int rc, long count, long available)
+{
+	size_t n;
+
+	if (!p->d)
+		return rc;
+	n = strlen(p->d->msg);
+	if (available < 6 * count && available != 3 * count)
+		snprintf(p->d->msg + n, sizeof(p->d->msg) - n,
+			 " (%ld light%s %ld numbers, or %ld without colours, and %ld follow the light count)",
+			 count, count == 1 ? " needs" : "s need", 6 * count, 3 * count, available);
+	return rc;
+}
+
 static int parse_lights(struct parser *p, struct scene *s, long count)
 {
 	long available = parser_count_numbers(p, 6 * count);
@@ -265,27 +284,12 @@ static int parse_lights(struct parser *p, struct scene *s, long count)
 	long i;
 	int rc;
 
-	if (available < 6 * count && !positions_only) {
-		double v;
-		/* Read what is there, so that a bad number is reported as such,
-		 * then locate the error where the numbers run out. */
-		for (i = 0; i < available; i++)
-			if ((rc = parser_number(p, "light position or colour", &v)) < 0)
-				return rc;
-		parser_next(p);
-		return parser_fail(p, RT_E_SYNTAX,
-				   "%ld light%s %ld numbers (or %ld for positions only), found %ld "
-				   "(does the light count match the lights?)",
-				   count, count == 1 ? " needs" : "s need", 6 * count, 3 * count, available);
-	}
-
 	for (i = 0; i < count; i++) {
 		struct vec3 pos;
 		struct color color = { 1.0, 1.0, 1.0 };
-		if ((rc = parser_vec3(p, "light position", &pos)) < 0)
-			return rc;
-		if (!positions_only && (rc = parser_color(p, "light colour component", &color)) < 0)
-			return rc;
+		if ((rc = parser_vec3(p, "light position", &pos)) < 0 ||
+		    (!positions_only && (rc = parser_color(p, "light colour component", &color)) < 0))
+			return parser_light_count_hint(p, rc, count, available);
 		if ((rc = scene_add_light(s, pos, color, p->d)) < 0)
 			return rc;
 	}
@@ -317,7 +321,8 @@ static int parse_scene(struct parser *p, struct scene *s)
 	int rc;
 
 	if (!first.text)
-		return diag_set(p->d, RT_E_SYNTAX, p->name, first.line, first.col, "%s",
+		return diag_set(p->d, RT_E_SYNTAX, p->name, first.line, first.col,
+				"expected an integer (recursion level), found end of file (%s)",
 				p->len > 0 ? "the file has no data, only space and comments"
 					   : "the file is empty");
 	if ((rc = parser_int(p, "recursion level", 1, RT_MAX_RECURSION, &recursion)) < 0 ||
@@ -333,6 +338,8 @@ static int parse_scene(struct parser *p, struct scene *s)
 	for (i = 1; i <= objects; i++)
 		if ((rc = parse_object(p, s, i, objects)) < 0)
 			return rc;
+	if (p->notes_dropped > 0)
+		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	rc = parser_int(p, "light count", 0, RT_MAX_LIGHTS, &lights);
 	if (rc < 0) {
 		if (p->last.text && shape_ops_find(p->last.text, p->last.len))
@@ -345,8 +352,6 @@ static int parse_scene(struct parser *p, struct scene *s)
 	if ((rc = parse_lights(p, s, lights)) < 0)
 		return rc;
 	parse_trailing(p);
-	if (p->notes_dropped > 0)
-		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	return 0;
 }
 
@@ -373,6 +378,7 @@ int scene_parse(const char *name, const char *text, size_t len,
 	s = scene_create(name);
 	if (!s)
 		return diag_set(d, RT_E_NOMEM, name, 0, 0, "out of memory");
+	s->source_hash = hash_bytes(RT_HASH_INIT, text, len);
 	rc = parse_scene(&p, s);
 	if (rc < 0) {
 		scene_destroy(s);

@@ -1,5 +1,7 @@
 /* The wrappers around the primitive tables, with the defaults of their
  * optional members in one place. */
+#include <string.h>
+
 #include "diag.h"
 #include "shape.h"
 
@@ -16,6 +18,13 @@ bool shape_bounds(const struct shape *s, struct aabb *out)
 const char *shape_degenerate(const struct shape *s)
 {
 	return s->ops->degenerate ? s->ops->degenerate(s) : NULL;
+}
+
+void shape_geometry(const struct shape *s, struct shape_geometry *out)
+{
+	memset(out, 0, sizeof(*out));
+	if (s->ops->geometry)
+		s->ops->geometry(s, out);
 }
 
 int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)

@@ -104,6 +104,15 @@ static void floor_destroy(struct shape *s)
 }
 
 /* Not in the registry: the floor is implicit, never read from a file. */
+static void floor_geometry(const struct shape *s, struct shape_geometry *out)
+{
+	const struct floor *fl = (const struct floor *)s;
+
+	out->kind = RT_SHAPE_FLOOR;
+	out->u.floor.width = 2.0 * fl->half;
+	out->u.floor.tile = fl->tile;
+}
+
 const struct shape_ops floor_ops = {
 	.keyword = "floor",
 	.intersect = floor_intersect,
@@ -112,6 +121,7 @@ const struct shape_ops floor_ops = {
 	.destroy = floor_destroy,
 	.color_at = floor_color_at,
 	.bounds = floor_bounds,
+	.geometry = floor_geometry,
 };
 
 struct shape *floor_create(double width, double tile)

@@ -132,6 +132,21 @@ static void quadric_destroy(struct shape *s)
 
 static int quadric_parse(struct parser *p, struct shape **out);
 
+static void quadric_geometry(const struct shape *s, struct shape_geometry *out)
+{
+	const struct quadric *q = (const struct quadric *)s;
+	const double coef[10] = { q->a, q->b, q->c, q->d, q->e, q->f, q->g, q->h, q->i, q->j };
+	int k;
+
+	out->kind = RT_SHAPE_QUADRIC;
+	for (k = 0; k < 10; k++)
+		out->u.quadric.coef[k] = coef[k];
+	out->u.quadric.lo = q->lo;
+	out->u.quadric.hi = q->hi;
+	for (k = 0; k < 3; k++)
+		out->u.quadric.clipped[k] = q->clipped[k];
+}
+
 const struct shape_ops quadric_ops = {
 	.keyword = "general",
 	.parse = quadric_parse,
@@ -140,6 +155,7 @@ const struct shape_ops quadric_ops = {
 	.export_pov = quadric_export_pov,
 	.destroy = quadric_destroy,
 	.bounds = quadric_bounds,
+	.geometry = quadric_geometry,
 };
 
 struct shape *quadric_create(const double coef[10], struct vec3 clip_ref,

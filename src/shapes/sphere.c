@@ -64,6 +64,15 @@ static void sphere_destroy(struct shape *s)
 
 static int sphere_parse(struct parser *p, struct shape **out);
 
+static void sphere_geometry(const struct shape *s, struct shape_geometry *out)
+{
+	const struct sphere *sp = (const struct sphere *)s;
+
+	out->kind = RT_SHAPE_SPHERE;
+	out->u.sphere.centre = sp->centre;
+	out->u.sphere.radius = sp->radius;
+}
+
 const struct shape_ops sphere_ops = {
 	.keyword = "sphere",
 	.parse = sphere_parse,
@@ -72,6 +81,7 @@ const struct shape_ops sphere_ops = {
 	.export_pov = sphere_export_pov,
 	.destroy = sphere_destroy,
 	.bounds = sphere_bounds,
+	.geometry = sphere_geometry,
 };
 
 struct shape *sphere_create(struct vec3 centre, double radius, const struct material *m)

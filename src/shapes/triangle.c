@@ -77,6 +77,16 @@ static void triangle_destroy(struct shape *s)
 
 static int triangle_parse(struct parser *p, struct shape **out);
 
+static void triangle_geometry(const struct shape *s, struct shape_geometry *out)
+{
+	const struct triangle *tr = (const struct triangle *)s;
+
+	out->kind = RT_SHAPE_TRIANGLE;
+	out->u.triangle.v[0] = tr->v0;
+	out->u.triangle.v[1] = vec3_add(tr->v0, tr->e1);
+	out->u.triangle.v[2] = vec3_add(tr->v0, tr->e2);
+}
+
 const struct shape_ops triangle_ops = {
 	.keyword = "triangle",
 	.parse = triangle_parse,
@@ -86,6 +96,7 @@ const struct shape_ops triangle_ops = {
 	.destroy = triangle_destroy,
 	.bounds = triangle_bounds,
 	.degenerate = triangle_degenerate,
+	.geometry = triangle_geometry,
 };
 
 struct shape *triangle_create(struct vec3 a, struct vec3 b, struct vec3 c,

@@ -199,13 +199,13 @@ truncate -s 300M "$T/sparse.txt"
 hostile "300 MiB file (sparse) refused by size" 'sparse\.txt: error: the file is larger than the limit of 268435456 bytes' "$T/sparse.txt"
 rm -f "$T/sparse.txt"
 yes '# a comment' | head -n 1000000 >"$T/comments.txt"
-hostile "a million comment lines" 'comments\.txt:1000001:1: error: the file has no data' "$T/comments.txt"
+hostile "a million comment lines" 'comments\.txt:1000001:1: error: .*the file has no data' "$T/comments.txt"
 printf '4\n16\n10000000\nsphere 0 0 10 1 1 1 1 0 0 0 0 0\n' >"$T/count.txt"
 hostile "object count of ten million, one object" 'count\.txt:5:1: error: expected an object keyword .* for object 2 of 10000000, found end of file' "$T/count.txt"
 printf '4\n16\n0\n100000\n0 0 100\n' >"$T/lights.txt"
-hostile "light count of 100000, one light" 'lights\.txt:6:1: error: 100000 lights need 600000 numbers' "$T/lights.txt"
+hostile "light count of 100000, one light" 'lights\.txt:6:1: error: .*found end of file \(100000 lights need 600000 numbers' "$T/lights.txt"
 hostile "scene from /dev/zero" '^/dev/zero: error: the file is larger than the limit' /dev/zero
-hostile "scene is /dev/null" '^/dev/null:1:1: error: the file is empty' /dev/null
+hostile "scene is /dev/null" '^/dev/null:1:1: error: .*\(the file is empty\)' /dev/null
 rm -f "$T/token.txt" "$T/comments.txt"
 
 # A long path (over 256 bytes) is named whole in the message.

@@ -1,0 +1,17 @@
+/* A 64-bit FNV-1a hash, to recognise the same scene text and settings
+ * across processes and machines.  It detects accidents (a tile of another
+ * scene or another size), not tampering: it is not a cryptographic hash. */
+#ifndef RT_HASH_H
+#define RT_HASH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* The FNV-1a 64-bit offset basis: the hash of no bytes. */
+#define RT_HASH_INIT UINT64_C(0xcbf29ce484222325)
+
+/* Continues hash h over n bytes at p; hash_bytes(RT_HASH_INIT, ...) starts
+ * a new one, and hashing a + b in two calls equals one call over both. */
+uint64_t hash_bytes(uint64_t h, const void *p, size_t n);
+
+#endif

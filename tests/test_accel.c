@@ -1,0 +1,370 @@
+/* The BVH against brute force: for random scenes of every primitive, the
+ * nearest hit (shape and t) and occlusion agree with a plain loop over
+ * all shapes; and the degenerate scenes (one centre, one shape, none,
+ * very many). */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "accel.h"
+#include "shapes/solve.h"
+#include "support.h"
+
+static uint64_t rng_state;
+
+static void rng_seed(uint64_t seed)
+{
+	rng_state = seed * 0x9e3779b97f4a7c15u + 1;
+}
+
+/* xorshift64*: uniform in [0, 1). */
+static double rng(void)
+{
+	rng_state ^= rng_state >> 12;
+	rng_state ^= rng_state << 25;
+	rng_state ^= rng_state >> 27;
+	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+}
+
+static double uniform(double lo, double hi)
+{
+	return lo + (hi - lo) * rng();
+}
+
+static struct vec3 random_point(double half)
+{
+	return vec3_make(uniform(-half, half), uniform(-half, half), uniform(-half, half));
+}
+
+static struct vec3 random_direction(void)
+{
+	for (;;) {
+		struct vec3 v = random_point(1.0);
+		double len = vec3_length(v);
+		if (len > 0.1 && len <= 1.0)
+			return vec3_scale(v, 1.0 / len);
+	}
+}
+
+static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5 };
+
+static void add(struct scene *s, struct shape *sh)
+{
+	struct diag d;
+
+	assert_non_null(sh);
+	assert_int_equal(scene_add_shape(s, sh, &d), 0);
+}
+
+/* A random primitive near centre c with size about `size`. */
+static void add_random_shape(struct scene *s, struct vec3 c, double size)
+{
+	double kind = rng();
+
+	if (kind < 0.35) {
+		add(s, sphere_create(c, uniform(0.05, 1.0) * size, &mat));
+	} else if (kind < 0.7) {
+		add(s, triangle_create(vec3_add(c, random_point(size)), vec3_add(c, random_point(size)),
+				       vec3_add(c, random_point(size)), &mat));
+	} else {
+		/* An ellipsoid, hyperboloid or cylinder around c:
+		 * a (x-cx)^2 + b (y-cy)^2 + e (z-cz)^2 = r^2 expanded. */
+		double a = uniform(0.2, 1.0), b = uniform(0.2, 1.0);
+		double e = rng() < 0.3 ? 0.0 : rng() < 0.5 ? -uniform(0.2, 1.0) : uniform(0.2, 1.0);
+		double r = uniform(0.2, 1.0) * size;
+		double coef[10] = {
+			a, b, e, 0, 0, 0, -2 * a * c.x, -2 * b * c.y, -2 * e * c.z,
+			a * c.x * c.x + b * c.y * c.y + e * c.z * c.z - r * r,
+		};
+		struct vec3 ext = vec3_make(uniform(0.5, 2) * size, uniform(0.5, 2) * size,
+					    uniform(0.5, 2) * size);
+		double clip = rng();
+
+		/* Clipped on all three axes (bounded), on some, or not at all. */
+		if (clip < 0.5) {
+			/* all three */
+		} else if (clip < 0.65) {
+			ext.x = 0;
+		} else if (clip < 0.8) {
+			ext.y = ext.z = 0;
+		} else {
+			ext = vec3_make(0, 0, 0);
+		}
+		add(s, quadric_create(coef, vec3_sub(c, vec3_scale(ext, 0.5)), ext, &mat));
+	}
+}
+
+/* Brute force: the nearest hit over every shape. */
+static const struct shape *brute_nearest(const struct scene *s, const struct ray *r,
+					 double t_min, double *t_max)
+{
+	const struct shape *hit = NULL;
+	size_t i;
+
+	for (i = 0; i < s->n_shapes; i++)
+		if (shape_intersect(s->shapes[i], r, t_min, t_max))
+			hit = s->shapes[i];
+	return hit;
+}
+
+static bool brute_occluded(const struct scene *s, const struct ray *r, double t_min, double t_max)
+{
+	size_t i;
+
+	for (i = 0; i < s->n_shapes; i++) {
+		double t = t_max;
+		if (shape_intersect(s->shapes[i], r, t_min, &t))
+			return true;
+	}
+	return false;
+}
+
+/* Compares the BVH with brute force on n rays; returns how many hit. */
+static int compare_rays(const struct scene *s, int n, double half)
+{
+	int i, hits = 0;
+
+	for (i = 0; i < n; i++) {
+		struct ray r;
+		double t_min = rng() < 0.5 ? 1e-6 : uniform(0, half);
+		double t_max = rng() < 0.5 ? INFINITY : uniform(t_min, 4 * half);
+		double ta = t_max, tb = t_max;
+		const struct shape *a, *b;
+
+		r.origin = random_point(1.5 * half);
+		if (rng() < 0.5 && s->n_shapes > 0) {
+			/* Aim at a random shape's box (or the origin). */
+			struct aabb box;
+			const struct shape *target = s->shapes[(size_t)(rng() * (double)s->n_shapes)];
+			struct vec3 aim = shape_bounds(target, &box) ? aabb_centre(box) : vec3_make(0, 0, 0);
+			r.dir = vec3_normalize(vec3_sub(vec3_add(aim, random_point(0.1)), r.origin));
+			if (vec3_length(r.dir) == 0.0)
+				r.dir = random_direction();
+		} else {
+			r.dir = random_direction();
+		}
+		if (rng() < 0.1)
+			r.dir = vec3_scale(r.dir, uniform(0.1, 10));	/* not unit */
+		if (rng() < 0.05) {
+			/* Along an axis: zero components in the slab test. */
+			int axis = (int)(rng() * 3);
+			r.dir = vec3_make(axis == 0, axis == 1, axis == 2);
+			if (rng() < 0.5)
+				r.dir = vec3_neg(r.dir);
+		}
+		a = accel_intersect(s->accel, &r, t_min, &ta);
+		b = brute_nearest(s, &r, t_min, &tb);
+		if (ta != tb || (a == NULL) != (b == NULL)) {
+			print_error("ray %d: BVH t = %.17g (%s), brute force t = %.17g (%s)\n", i, ta,
+				    a ? a->ops->keyword : "none", tb, b ? b->ops->keyword : "none");
+			fail();
+		}
+		if (a != b) {
+			/* A tie: the BVH's shape must hit at the same t. */
+			double t = t_max;
+			assert_true(shape_intersect(a, &r, t_min, &t));
+			assert_true(t == tb);
+		}
+		hits += a != NULL;
+		if (accel_occluded(s->accel, &r, t_min, t_max) != brute_occluded(s, &r, t_min, t_max)) {
+			print_error("ray %d: occlusion differs\n", i);
+			fail();
+		}
+	}
+	return hits;
+}
+
+static void test_accel_random_scenes_match_brute_force(void **state)
+{
+	int scene_no;
+
+	(void)state;
+	for (scene_no = 0; scene_no < 12; scene_no++) {
+		struct scene *s = scene_create("random");
+		int n = 1 + scene_no * scene_no * 4, i, hits;
+		double half = 50;
+		struct diag d;
+
+		rng_seed((uint64_t)scene_no + 1);
+		assert_non_null(s);
+		for (i = 0; i < n; i++)
+			add_random_shape(s, random_point(half), uniform(0.5, 10));
+		if (scene_no % 2 == 0)
+			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+		assert_int_equal(scene_prepare(s, &d), 0);
+		hits = compare_rays(s, 3000, half);
+		/* The rays aimed at shapes mostly hit. */
+		assert_true(hits > 300);
+		scene_destroy(s);
+	}
+}
+
+static void test_accel_all_shapes_at_one_centre(void **state)
+{
+	struct scene *s = scene_create("one centre");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(99);
+	/* Spheres of different radii, and triangles and clipped quadrics
+	 * whose boxes share the centre: no split by centres is possible. */
+	for (i = 0; i < 200; i++) {
+		double r = 0.5 + i * 0.05;
+		add(s, sphere_create(vec3_make(3, 3, 3), r, &mat));
+	}
+	for (i = 0; i < 100; i++) {
+		struct vec3 a = random_point(5);
+		add(s, triangle_create(vec3_add(vec3_make(3, 3, 3), a), vec3_sub(vec3_make(3, 3, 3), a),
+				       vec3_add(vec3_make(3, 3, 3), vec3_cross(a, vec3_make(0, 0, 1))), &mat));
+	}
+	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_true(accel_node_count(s->accel) > 1);
+	assert_true(compare_rays(s, 3000, 10) > 300);
+	scene_destroy(s);
+}
+
+static void test_accel_one_shape(void **state)
+{
+	struct scene *s = scene_create("one");
+	struct ray r;
+	struct diag d;
+	double t = INFINITY;
+
+	(void)state;
+	add(s, sphere_create(vec3_make(0, 0, 0), 2, &mat));
+	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(accel_node_count(s->accel), 1);
+	r.origin = vec3_make(0, 0, -10);
+	r.dir = vec3_make(0, 0, 1);
+	assert_ptr_equal(accel_intersect(s->accel, &r, 0, &t), s->shapes[0]);
+	assert_near(t, 8.0, 1e-12);
+	assert_true(accel_occluded(s->accel, &r, 0, 8.5));
+	assert_false(accel_occluded(s->accel, &r, 0, 8.0));
+	r.dir = vec3_make(0, 0, -1);
+	t = INFINITY;
+	assert_null(accel_intersect(s->accel, &r, 0, &t));
+	assert_true(isinf(t));
+	rng_seed(7);
+	compare_rays(s, 2000, 5);
+	scene_destroy(s);
+}
+
+static void test_accel_no_shapes(void **state)
+{
+	struct scene *s = scene_create("empty");
+	struct ray r;
+	struct diag d;
+	double t = 5.0;
+
+	(void)state;
+	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_non_null(s->accel);
+	assert_int_equal(accel_node_count(s->accel), 0);
+	r.origin = vec3_make(0, 0, 0);
+	r.dir = vec3_make(1, 0, 0);
+	assert_null(accel_intersect(s->accel, &r, 0, &t));
+	assert_near(t, 5.0, 0.0);
+	assert_false(accel_occluded(s->accel, &r, 0, INFINITY));
+	/* Only unbounded shapes: no nodes, but hits. */
+	{
+		static const double plane[10] = { 0, 0, 0, 0, 0, 0, 1, 0, 0, -3 };
+		add(s, quadric_create(plane, vec3_make(0, 0, 0), vec3_make(0, 0, 0), &mat));
+	}
+	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(accel_node_count(s->accel), 0);
+	t = INFINITY;
+	assert_ptr_equal(accel_intersect(s->accel, &r, 0, &t), s->shapes[0]);
+	assert_near(t, 3.0, 0.0);
+	assert_true(accel_occluded(s->accel, &r, 0, INFINITY));
+	assert_false(accel_occluded(s->accel, &r, 0, 3.0));
+	scene_destroy(s);
+}
+
+static void test_accel_many_shapes(void **state)
+{
+	struct scene *s = scene_create("many");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(10000);
+	for (i = 0; i < 10000; i++)
+		add_random_shape(s, random_point(200), uniform(0.2, 3));
+	assert_int_equal(scene_add_floor(s, 300, 10, &d), 0);
+	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_true(accel_node_count(s->accel) > 1000);
+	assert_true(accel_bytes(s->accel) > accel_node_count(s->accel));
+	assert_true(compare_rays(s, 3000, 200) > 300);
+	/* Preparing again rebuilds without leaking the old hierarchy. */
+	assert_int_equal(scene_prepare(s, &d), 0);
+	scene_destroy(s);
+}
+
+static void test_accel_many_at_one_point(void **state)
+{
+	struct scene *s = scene_create("stack");
+	struct diag d;
+	int i;
+
+	(void)state;
+	/* 10000 identical tiny spheres: the median split must still end. */
+	for (i = 0; i < 10000; i++)
+		add(s, sphere_create(vec3_make(1, 2, 3), 0.5, &mat));
+	assert_int_equal(scene_prepare(s, &d), 0);
+	rng_seed(3);
+	compare_rays(s, 500, 4);
+	scene_destroy(s);
+}
+
+static void test_accel_negative_zero_direction(void **state)
+{
+	/* A triangle standing on z = 0, its bottom edge on the face z = 0 of
+	 * its box, and rays running along that face: they touch the edge
+	 * (edges are inclusive) at x = 0, t = 5, whether the zero z
+	 * component of the direction is +0 or -0. */
+	struct scene *s = scene_create("negative zero");
+	static const double zeros[2] = { 0.0, -0.0 };
+	struct diag d;
+	int i, k;
+
+	(void)state;
+	add(s, triangle_create(vec3_make(0, -10, 0), vec3_make(0, 10, 0), vec3_make(0, 0, 20), &mat));
+	for (i = 0; i < 10; i++)
+		add(s, sphere_create(vec3_make(50 + i * 10, 0, 5), 1, &mat));
+	assert_int_equal(scene_prepare(s, &d), 0);
+	for (k = 0; k < 2; k++) {
+		struct ray r;
+		double ta = INFINITY, tb = INFINITY;
+
+		r.origin = vec3_make(-5, 0, 0);
+		r.dir = vec3_make(1, zeros[k], zeros[k]);
+		assert_ptr_equal(brute_nearest(s, &r, 1e-6, &tb), s->shapes[0]);
+		assert_near(tb, 5.0, 0.0);
+		assert_ptr_equal(accel_intersect(s->accel, &r, 1e-6, &ta), s->shapes[0]);
+		assert_near(ta, 5.0, 0.0);
+		assert_true(accel_occluded(s->accel, &r, 1e-6, INFINITY));
+		/* The same along the top of a box: the sphere at x = 50 spans
+		 * z in [4, 6]; a ray along z = 6 grazes it at (50, 0, 6). */
+		r.origin = vec3_make(-5, 0, 6);
+		r.dir = vec3_make(1, zeros[k], zeros[k]);
+		ta = tb = INFINITY;
+		assert_ptr_equal(accel_intersect(s->accel, &r, 1e-6, &ta), brute_nearest(s, &r, 1e-6, &tb));
+		assert_true(ta == tb);
+	}
+	scene_destroy(s);
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_accel_random_scenes_match_brute_force),
+		cmocka_unit_test(test_accel_all_shapes_at_one_centre),
+		cmocka_unit_test(test_accel_one_shape),
+		cmocka_unit_test(test_accel_no_shapes),
+		cmocka_unit_test(test_accel_many_shapes),
+		cmocka_unit_test(test_accel_many_at_one_point),
+		cmocka_unit_test(test_accel_negative_zero_direction),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}
