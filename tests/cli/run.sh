@@ -67,6 +67,22 @@ bad_values --floor --floor 1000 0,20 1000,0 -1000,20 1000,-20 a,20 1000,20,3 1e1
 bad_values --clamp --clamp levels '' FINAL
 bad_values --format --format jpg '' pngx
 bad_values --progress --progress sometimes ''
+bad_values --region --region abc 0,0,8 0,0,8,8x 0,0,769,8 4,0,2,8 -1,0,8,8 0,0,0,0 1e3,0,8,8 ''
+bad_values --frames --frames abc 0 2x 100000000 ''
+bad_values --grid --grid 2x 0x2 2x2x2 x2 ''
+expect_error "option --tile 'x'" 2 --tile -s 8 -o x.png --grid 2x2 --tile x "$SCENE"
+expect_error "option --tile past the grid" 2 --tile -s 8 -o x.png --grid 2x2 --tile 5 "$SCENE"
+expect_error "option --grid finer than the image" 2 --grid -s 8 -o x.png --grid 9x9 --tile 1 "$SCENE"
+expect_error "option --tile without --grid" 2 --tile -s 8 -o x.png --tile 1 "$SCENE"
+expect_error "option --frame 'x'" 2 --frame -s 8 -o 'f%04d.png' --frames 2 --frame x "$SCENE"
+expect_error "option --frame past the last" 2 --frame -s 8 -o 'f%04d.png' --frames 2 --frame 3 "$SCENE"
+expect_error "option --frame without --frames" 2 --frame -s 8 -o x.png --frame 1 "$SCENE"
+expect_error "option --region with --grid" 2 --region -s 8 -o x.png --region 0,0,4,4 --grid 2x2 --tile 1 "$SCENE"
+expect_error "--path missing" 1 'cannot open' -s 8 -o 'f%04d.png' --frames 2 --path "$T/nosuch" "$SCENE"
+expect_error "--path binary" 1 'NUL byte' -s 8 -o 'f%04d.png' --frames 2 --path "$W" "$SCENE"
+printf 'eye 0,-200,10 look 0,0,0 up 0,0,1 fov 80\neye 0,0,0 look 0,0,0 up 0,0,1 fov 80\n' >"$T/path.txt"
+expect_error "--path bad keyframe: no frame written" 1 'the eye is at the look-at point' \
+	-s 8 -o 'f%04d.png' --frames 3 --path "$T/path.txt" "$SCENE"
 expect_error output-empty 2 '--output: expected a file name' -o '' "$SCENE"
 expect_error eye-at-look 2 'whitted: error:' -s 8 -o x.png --eye 0,0,0 "$SCENE"
 expect_error up-zero 2 'whitted: error:' -s 8 -o x.png --up 0,0,0 "$SCENE"
