@@ -1,4 +1,5 @@
 /* PNG output through libpng's simplified API (no setjmp here). */
+#include <errno.h>
 #include <png.h>
 #include <string.h>
 
@@ -13,7 +14,13 @@ int image_write_png(const struct image *img, FILE *f, struct diag *d)
 	png.width = (png_uint_32)img->width;
 	png.height = (png_uint_32)img->height;
 	png.format = PNG_FORMAT_RGB;
-	if (!png_image_write_to_stdio(&png, f, 0, img->pixels, 0, NULL))
+	errno = 0;
+	if (!png_image_write_to_stdio(&png, f, 0, img->pixels, 0, NULL)) {
+		/* libpng says only "Write Error" when the stream fails: the
+		 * reason (a full disk, a file-size limit) is in errno. */
+		if (ferror(f) && errno != 0)
+			return diag_set(d, RT_E_IO, "", 0, 0, "cannot write PNG: %s", strerror(errno));
 		return diag_set(d, RT_E_IO, "", 0, 0, "cannot write PNG: %s", png.message);
+	}
 	return 0;
 }

@@ -60,4 +60,31 @@ vg "missing output directory" 1 -s 8 -o nodir/x.png "$ROOT/scenes/scene.txt"
 vg "full device" 1 -s 8 -o /dev/full --format png "$ROOT/scenes/scene.txt"
 vg "help" 0 --help
 
+# The failure paths of the write and of an interrupted render.
+for f in png bmp ppm; do
+	clean_wd
+	(ulimit -f 1 && cd "$T/wd" && exec $VG "$W" -s 128 -o "x.$f" "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err"
+	rc=$?
+	if [ "$rc" -ne 1 ] || grep -q '^==[0-9]*==' "$T/err" || ! wd_empty; then
+		bad "file-size limit $f" "exit $rc, left: $(wd_files)"
+		sed 's/^/    /' "$T/err" | head -40
+	else
+		ok
+	fi
+done
+clean_wd
+(cd "$T/wd" && exec $VG "$W" -s 1000 -j 2 -o x.png "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err" &
+pid=$!
+sleep 3
+kill -s INT $pid
+sent=$?
+wait $pid
+rc=$?
+if [ "$sent" -ne 0 ] || [ "$rc" -ne 130 ] || grep -q '^==[0-9]*==' "$T/err" || ! wd_empty; then
+	bad "SIGINT during a render" "signal sent: $sent, exit $rc, left: $(wd_files)"
+	sed 's/^/    /' "$T/err" | head -40
+else
+	ok
+fi
+
 finish

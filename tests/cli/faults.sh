@@ -105,12 +105,12 @@ chmod 755 "$T/ro"
 check "read-only dir control run" [ $? -eq 0 ]
 
 # A file-size limit during the write: whitted ignores SIGXFSZ, so the write
-# fails with EFBIG.  1 block is far below every format's size at -s 64.
+# fails with EFBIG.  1 block is far below every format's size at -s 128.
 for f in png bmp ppm; do
 	rm -rf "$T/fs" && mkdir -p "$T/fs"
 	for existing in no yes; do
 		[ $existing = yes ] && printf 'old\n' >"$T/fs/x.$f"
-		(ulimit -f 1 && cd "$T/fs" && exec "$W" -s 64 -o "x.$f" "$SCENE") >"$T/out" 2>"$T/err"
+		(ulimit -f 1 && cd "$T/fs" && exec "$W" -s 128 -o "x.$f" "$SCENE") >"$T/out" 2>"$T/err"
 		rc=$?
 		check "file-size limit $f exit ($existing)" [ "$rc" -eq 1 ]
 		check "file-size limit $f message ($existing)" grep -qE "^x\.$f: error: cannot write.*: File too large$" "$T/err"
