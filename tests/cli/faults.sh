@@ -123,6 +123,13 @@ for f in png bmp ppm; do
 	done
 done
 
+# A small PNG that fits the stdio buffer fails in the final flush instead.
+rm -rf "$T/fs" && mkdir -p "$T/fs"
+(ulimit -f 1 && cd "$T/fs" && exec "$W" -s 64 -o x.png "$SCENE") >"$T/out" 2>"$T/err"
+check "file-size limit at the flush exit" [ $? -eq 1 ]
+check "file-size limit at the flush message" grep -qx 'x.png: error: cannot write: File too large' "$T/err"
+check "file-size limit at the flush nothing left" [ -z "$(ls -A "$T/fs")" ]
+
 # A full device, written in place.
 for f in png bmp ppm; do
 	"$W" -s 64 -o /dev/full --format $f "$SCENE" >"$T/out" 2>"$T/err"
