@@ -93,6 +93,9 @@ static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
 }
 
 struct color shape_color_at(const struct shape *s, struct vec3 p);
+/* True when the colour varies over the surface (color_at is set): such a
+ * shape's POV-Ray export carries its own texture for the global lights. */
+bool shape_is_textured(const struct shape *s);
 bool shape_bounds(const struct shape *s, struct aabb *out);
 const char *shape_degenerate(const struct shape *s);
 void shape_geometry(const struct shape *s, struct shape_geometry *out);

@@ -1,13 +1,27 @@
 /* Helpers for writing POV-Ray 3.7 scene language: numbers that read back
  * exactly, vectors, and the texture that reproduces a material. */
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "pov.h"
 
 void pov_write_number(FILE *out, double v)
 {
-	/* 17 significant digits round-trip a double. */
-	fprintf(out, "%.17g", v == 0.0 ? 0.0 : v);
+	/* The shortest of 15 to 17 significant digits that reads back as the
+	 * same double (17 always do): 0.4, not 0.40000000000000002. */
+	char buf[32];
+	int prec;
+
+	if (v == 0.0)
+		v = 0.0;	/* no "-0" */
+	for (prec = 15; prec < 17; prec++) {
+		snprintf(buf, sizeof(buf), "%.*g", prec, v);
+		if (strtod(buf, NULL) == v)
+			break;
+	}
+	if (prec == 17)
+		snprintf(buf, sizeof(buf), "%.17g", v);
+	fputs(buf, out);
 }
 
 void pov_write_vector(FILE *out, double x, double y, double z)

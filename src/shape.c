@@ -10,6 +10,11 @@ struct color shape_color_at(const struct shape *s, struct vec3 p)
 	return s->ops->color_at ? s->ops->color_at(s, p) : s->mat.color;
 }
 
+bool shape_is_textured(const struct shape *s)
+{
+	return s->ops->color_at != NULL;
+}
+
 bool shape_bounds(const struct shape *s, struct aabb *out)
 {
 	return s->ops->bounds ? s->ops->bounds(s, out) : false;

@@ -1,0 +1,28 @@
+/* The scene as a POV-Ray 3.7 scene file and the .ini that renders it the way
+ * `whitted --clamp final` does.  The shapes write themselves (shape_ops
+ * export_pov); this module writes the settings, the camera and the lights
+ * around them. */
+#ifndef RT_POV_EXPORT_H
+#define RT_POV_EXPORT_H
+
+#include <stdio.h>
+
+#include "camera.h"
+#include "diag.h"
+#include "pov.h"
+#include "scene.h"
+
+/* Writes the whole .pov file.  Returns 0, -RT_E_NOMEM or -RT_E_IO. */
+int pov_export_scene(FILE *out, const struct scene *s, const struct camera *cam,
+		     const struct pov_options *opt, struct diag *d);
+
+/* Writes the .ini that renders pov_name into png_name (both relative to the
+ * directory povray runs in) at size x size pixels with linear output. */
+int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int size,
+		   struct diag *d);
+
+/* True when POV-Ray's .ini syntax can carry the name (no quote, no control
+ * character, not empty). */
+bool pov_export_name_ok(const char *name);
+
+#endif
