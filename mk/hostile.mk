@@ -2,8 +2,8 @@
 #   make faults       output faults: missing and read-only directories, a
 #                     file-size limit, a full device, SIGINT and SIGTERM
 #   make fuzz         builds the libFuzzer target with clang and runs it for
-#                     FUZZ_SECONDS (default 600) on tests/fuzz/corpus
-#   make fuzz-replay  runs every corpus file through the same harness, built
+#                     FUZZ_SECONDS (default 600) on tests/fuzz/corpus and tests/errors
+#   make fuzz-replay  runs every corpus and error file through the same harness, built
 #                     with $(CC) and ASan/UBSan (part of make check)
 FUZZ_SECONDS ?= 600
 FUZZ_CC ?= clang
@@ -46,7 +46,7 @@ fuzz: fuzz-cc-check $(FUZZ_DIR)/fuzz_scene
 	$(FUZZ_DIR)/fuzz_scene -max_total_time=$(FUZZ_SECONDS) \
 		-dict=tests/fuzz/scene.dict -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
 		-artifact_prefix=$(FUZZ_DIR)/artifacts/ -print_final_stats=1 \
-		$(FUZZ_DIR)/corpus tests/fuzz/corpus
+		$(FUZZ_DIR)/corpus tests/fuzz/corpus tests/errors
 
 fuzz-replay: $(BUILD)/replay/fuzz_replay
-	@$(BUILD)/replay/fuzz_replay tests/fuzz/corpus
+	@$(BUILD)/replay/fuzz_replay tests/fuzz/corpus tests/errors
