@@ -14,7 +14,7 @@ enum rt_err {
 	RT_E_INTERRUPTED,
 };
 
-#define RT_DIAG_FILE_MAX 256
+#define RT_DIAG_FILE_MAX 4096	/* PATH_MAX: a long path is never cut short */
 #define RT_DIAG_MSG_MAX 512
 
 struct diag {

@@ -3,6 +3,7 @@
 #define RT_IMAGE_H
 
 #include <signal.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 
@@ -48,5 +49,10 @@ typedef int image_fill_fn(void *ctx, FILE *f, struct diag *d);
  * image_write (which is this with an image writer as fill). */
 int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
 		     const volatile sig_atomic_t *cancel, struct diag *d);
+
+/* True when image_write writes path in place rather than through a
+ * temporary file: an existing non-regular file (a pipe, a device) or a path
+ * under /dev/ or /proc/ (/dev/stdout, /dev/fd/N, /proc/self/fd/N). */
+bool image_path_is_direct(const char *path);
 
 #endif

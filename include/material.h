@@ -33,9 +33,11 @@ static inline struct color color_scale(struct color a, double s)
 	return color_make(a.r * s, a.g * s, a.b * s);
 }
 
+/* NaN (from coordinates near overflow) becomes 0, not an unspecified
+ * lround result. */
 static inline double color_clamp01(double v)
 {
-	return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+	return v > 1.0 ? 1.0 : v > 0.0 ? v : 0.0;
 }
 
 static inline struct color color_clamp(struct color a)

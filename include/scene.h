@@ -18,7 +18,7 @@
 #define RT_MAX_RECURSION 256
 #define RT_MAX_OBJECTS 10000000L
 #define RT_MAX_LIGHTS 100000L
-#define RT_MAX_SCENE_BYTES (1L << 30)
+#define RT_MAX_SCENE_BYTES (1L << 28)	/* 256 MiB: about 2 million objects */
 
 /* The implicit floor of every scene (the assignment's Floor(1000, 20)). */
 #define RT_FLOOR_WIDTH 1000.0

@@ -144,10 +144,16 @@ static void refs_bounds(const struct build_ref *refs, size_t n, struct build_box
 	}
 }
 
+/* Clamps before converting: with coordinates near DBL_MAX a centre or the
+ * extent can overflow to inf and the product be NaN, and converting that
+ * (or anything outside int) is undefined. */
 static int bin_of(double c, double lo, double scale)
 {
-	int b = (int)((c - lo) * scale);
-	return b < 0 ? 0 : b >= ACCEL_BINS ? ACCEL_BINS - 1 : b;
+	double f = (c - lo) * scale;
+
+	if (!(f >= 0.0))
+		return 0;
+	return f >= ACCEL_BINS ? ACCEL_BINS - 1 : (int)f;
 }
 
 struct sah_bin {

@@ -101,6 +101,18 @@ static int image_write_direct(const char *path, image_fill_fn *fill, void *ctx,
 	return rc;
 }
 
+bool image_path_is_direct(const char *path)
+{
+	struct stat st;
+
+	/* /dev/stdout is a symbolic link to the descriptor, whose file may be
+	 * regular: a temporary file in /dev renamed over the link would
+	 * replace /dev/stdout itself. */
+	if (strncmp(path, "/dev/", 5) == 0 || strncmp(path, "/proc/", 6) == 0)
+		return true;
+	return stat(path, &st) == 0 && !S_ISREG(st.st_mode);
+}
+
 struct image_fill_ctx {
 	const struct image *img;
 	enum image_format fmt;
@@ -134,6 +146,8 @@ int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
 	FILE *f;
 	int fd, rc;
 
+	if (image_path_is_direct(path))
+		return image_write_direct(path, fill, ctx, d);
 	if (stat(path, &st) == 0) {
 		if (!S_ISREG(st.st_mode))
 			return image_write_direct(path, fill, ctx, d);
@@ -145,7 +159,9 @@ int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
 	if (!tmp)
 		return diag_set(d, RT_E_NOMEM, "", 0, 0, "out of memory");
 	memcpy(tmp, path, dir_len);
-	sprintf(tmp + dir_len, ".%s.XXXXXX", path + dir_len);
+	/* At most 200 bytes of the name, so that the temporary name fits in
+	 * NAME_MAX (255) whenever the output's name does. */
+	sprintf(tmp + dir_len, ".%.200s.XXXXXX", path + dir_len);
 	fd = mkstemp(tmp);
 	if (fd < 0) {
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));

@@ -63,10 +63,11 @@ struct token lexer_next(struct lexer *lx)
 	}
 }
 
-/* Copies the token into buf as a C string; false when it does not fit. */
+/* Copies the token into buf as a C string; false when it does not fit or
+ * holds a NUL byte (strtod would stop there: "1\0" "6" must not read as 1). */
 static bool token_copy(const struct token *t, char *buf, size_t size)
 {
-	if (!t->text || t->len == 0 || t->len >= size)
+	if (!t->text || t->len == 0 || t->len >= size || memchr(t->text, '\0', t->len))
 		return false;
 	memcpy(buf, t->text, t->len);
 	buf[t->len] = '\0';

@@ -317,7 +317,7 @@ static int parse_args(int argc, char **argv, struct options *o)
 	cli_scene_init(&o->scene);
 	o->threads = cli_default_threads();
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, CLI_SCENE_SHORT "o:j:hV", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":" CLI_SCENE_SHORT "o:j:hV", longopts, NULL)) != -1) {
 		diag_clear(&d);
 		rc = cli_scene_option(&o->scene, c, optarg, &d);
 		if (rc < 0)
@@ -459,14 +459,19 @@ static void show_progress(void *ctx, long done, long total)
 static int check_output_dir(const char *path, struct diag *d)
 {
 	const char *slash = strrchr(path, '/');
+	struct stat st;
 	char dir[4096];
 
+	if (image_path_is_direct(path))
+		return 0;
 	if (!slash)
 		snprintf(dir, sizeof(dir), ".");
 	else if (slash == path)
 		snprintf(dir, sizeof(dir), "/");
 	else
 		snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
+	if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
+		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(ENOTDIR));
 	if (access(dir, W_OK | X_OK) != 0)
 		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	return 0;
@@ -645,7 +650,9 @@ static int run(struct options *o)
 	status = 0;
 out:
 	if (rc < 0) {
-		if (rc == -RT_E_INTERRUPTED)
+		/* A signal that interrupted a system call (opening a FIFO that
+		 * nobody reads) shows as an I/O error: the status names the signal. */
+		if (rc == -RT_E_INTERRUPTED || cancelled)
 			status = 128 + (int)cancelled;
 		print_diag(&d, "error");
 	}
@@ -695,7 +702,7 @@ static int merge_main(int argc, char **argv)
 	int c, rc;
 
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, "o:h", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, ":o:h", longopts, NULL)) != -1) {
 		switch (c) {
 		case 'o':
 			if (optarg[0] == '\0')
@@ -733,20 +740,24 @@ static int merge_main(int argc, char **argv)
 	image_free(&img);
 	if (rc < 0) {
 		print_diag(&d, "error");
-		return rc == -RT_E_INTERRUPTED ? 128 + (int)cancelled : EXIT_SCENE;
+		return rc == -RT_E_INTERRUPTED || cancelled ? 128 + (int)cancelled : EXIT_SCENE;
 	}
 	return 0;
 }
 
 static void set_signals(void)
 {
-	struct sigaction sa;
+	struct sigaction sa, old_sa;
 
 	memset(&sa, 0, sizeof(sa));
 	sa.sa_handler = on_signal;
 	sigemptyset(&sa.sa_mask);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
+	/* A closed terminal stops the render cleanly too, unless the hang-up
+	 * is ignored (nohup). */
+	if (sigaction(SIGHUP, NULL, &old_sa) == 0 && old_sa.sa_handler != SIG_IGN)
+		sigaction(SIGHUP, &sa, NULL);
 	/* A file-size limit then fails the write with EFBIG instead of killing
 	 * us with a temporary file left behind. */
 	signal(SIGXFSZ, SIG_IGN);

@@ -260,6 +260,23 @@ static long parser_count_numbers(const struct parser *p, long limit)
 	return n;
 }
 
+/* Adds to a light's error, when the numbers after the light count fit
+ * neither 6 nor 3 per light, how many there are: the count is the likely
+ * culprit. */
+static int parser_light_count_hint(struct parser *p, int rc, long count, long available)
+{
+	size_t n;
+
+	if (!p->d)
+		return rc;
+	n = strlen(p->d->msg);
+	if (available < 6 * count && available != 3 * count)
+		snprintf(p->d->msg + n, sizeof(p->d->msg) - n,
+			 " (%ld light%s %ld numbers, or %ld without colours, and %ld follow the light count)",
+			 count, count == 1 ? " needs" : "s need", 6 * count, 3 * count, available);
+	return rc;
+}
+
 static int parse_lights(struct parser *p, struct scene *s, long count)
 {
 	long available = parser_count_numbers(p, 6 * count);
@@ -270,10 +287,9 @@ static int parse_lights(struct parser *p, struct scene *s, long count)
 	for (i = 0; i < count; i++) {
 		struct vec3 pos;
 		struct color color = { 1.0, 1.0, 1.0 };
-		if ((rc = parser_vec3(p, "light position", &pos)) < 0)
-			return rc;
-		if (!positions_only && (rc = parser_color(p, "light colour component", &color)) < 0)
-			return rc;
+		if ((rc = parser_vec3(p, "light position", &pos)) < 0 ||
+		    (!positions_only && (rc = parser_color(p, "light colour component", &color)) < 0))
+			return parser_light_count_hint(p, rc, count, available);
 		if ((rc = scene_add_light(s, pos, color, p->d)) < 0)
 			return rc;
 	}
@@ -299,9 +315,16 @@ static void parse_trailing(struct parser *p)
 
 static int parse_scene(struct parser *p, struct scene *s)
 {
+	struct lexer ahead = p->lx;
+	struct token first = lexer_next(&ahead);
 	long recursion, size, objects, lights, i;
 	int rc;
 
+	if (!first.text)
+		return diag_set(p->d, RT_E_SYNTAX, p->name, first.line, first.col,
+				"expected an integer (recursion level), found end of file (%s)",
+				p->len > 0 ? "the file has no data, only space and comments"
+					   : "the file is empty");
 	if ((rc = parser_int(p, "recursion level", 1, RT_MAX_RECURSION, &recursion)) < 0 ||
 	    (rc = parser_int(p, "image size", 1, RT_MAX_IMAGE_SIZE, &size)) < 0)
 		return rc;
@@ -341,6 +364,9 @@ int scene_parse(const char *name, const char *text, size_t len,
 	int rc;
 
 	*out = NULL;
+	if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+		return diag_set(d, RT_E_SYNTAX, name, 1, 1,
+				"the file starts with a UTF-8 byte order mark; save it as plain text without one");
 	memset(&p, 0, sizeof(p));
 	lexer_init(&p.lx, text, len);
 	p.name = name;

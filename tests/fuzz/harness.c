@@ -1,0 +1,84 @@
+/* The fuzz target: scene_parse on arbitrary bytes, then, for a scene that
+ * parses, the floor, scene_prepare, a camera and a render of a 3 x 3 image
+ * with recursion at most 3, so that every stage that reads parsed values
+ * runs on them.  Diagnostics are formatted to check that they stay well
+ * formed (NUL-terminated, within the buffer). */
+#include <string.h>
+
+#include "camera.h"
+#include "diag.h"
+#include "image.h"
+#include "render.h"
+#include "scene.h"
+
+#include "harness.h"
+
+#define FUZZ_IMAGE 3
+#define FUZZ_RECURSION 3
+
+static void fuzz_check_diag(const struct diag *d)
+{
+	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
+
+	diag_format(d, "error", line, sizeof(line));
+	if (strlen(line) >= sizeof(line) || memchr(d->msg, '\n', strlen(d->msg)))
+		__builtin_trap();
+}
+
+static void fuzz_note(void *ctx, const struct diag *note)
+{
+	(void)ctx;
+	fuzz_check_diag(note);
+}
+
+static void fuzz_render(struct scene *s)
+{
+	struct camera_params cp;
+	struct camera cam;
+	struct render_job job;
+	struct image img = { 0, 0, NULL };
+	struct diag d;
+
+	diag_clear(&d);
+	if (s->recursion > FUZZ_RECURSION)
+		s->recursion = FUZZ_RECURSION;
+	if (scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d) < 0 ||
+	    scene_prepare(s, &d) < 0)
+		return;
+	camera_params_default(&cp);
+	if (camera_init(&cam, &cp, FUZZ_IMAGE, &d) < 0 ||
+	    image_alloc(&img, FUZZ_IMAGE, FUZZ_IMAGE, &d) < 0)
+		return;
+	memset(&job, 0, sizeof(job));
+	job.scene = s;
+	job.camera = &cam;
+	job.settings.recursion = s->recursion;
+	job.settings.clamp = RT_CLAMP_LEVEL;
+	job.threads = 1;
+	job.x1 = job.y1 = FUZZ_IMAGE;
+	if (render_image(&job, &img, NULL, &d) < 0)
+		fuzz_check_diag(&d);
+	image_free(&img);
+}
+
+int fuzz_scene_one(const uint8_t *data, size_t size)
+{
+	struct scene *s = NULL;
+	struct diag d;
+	int rc;
+
+	diag_clear(&d);
+	rc = scene_parse("fuzz.txt", (const char *)data, size, fuzz_note, NULL, &s, &d);
+	if (rc < 0) {
+		/* A failed parse reports a located error and returns nothing. */
+		if (s != NULL || d.msg[0] == '\0' || d.line < 0 || d.col < 0)
+			__builtin_trap();
+		fuzz_check_diag(&d);
+		return 0;
+	}
+	if (s->image_size < 1 || s->recursion < 1)
+		__builtin_trap();
+	fuzz_render(s);
+	scene_destroy(s);
+	return 0;
+}
