@@ -175,9 +175,10 @@ signal_test TERM 143 no
 signal_test INT 130 yes
 signal_test TERM 143 yes
 signal_test HUP 129 no
-# Under nohup a hang-up is ignored and the render completes.
+# Under nohup a hang-up is ignored and the render completes (as large as
+# above: at -s 2000 the render was over before the signal).
 rm -rf "$T/sig" && mkdir -p "$T/sig"
-(cd "$T/sig" && exec nohup "$W" -s 2000 -o big.png "$SCENE") >/dev/null 2>&1 &
+(cd "$T/sig" && exec nohup "$W" -s 6000 -r 8 -o big.png "$SCENE") >/dev/null 2>&1 &
 pid=$!
 sleep 0.3
 kill -s HUP $pid
