@@ -75,6 +75,16 @@ int cli_parse_double(const char *opt, const char *arg, double *out, struct diag 
 /* n comma-separated finite numbers. */
 int cli_parse_list(const char *opt, const char *arg, double *out, int n, struct diag *d);
 
+/* The SCENE operand after the options (argv[first..argc)): exactly one,
+ * or none with --test-scene.  *path is NULL for the test scene. */
+int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int first,
+		      const char **path, struct diag *d);
+
+/* The default output name: SCENE's base name without its extension ("stdin"
+ * for "-", "test-scene" for NULL) followed by suffix, e.g. "-tile-3.png".
+ * Allocated with malloc; NULL when out of memory. */
+char *cli_default_output(const char *scene_path, const char *suffix);
+
 /* The online processor count, at least 1. */
 int cli_default_threads(void);
 

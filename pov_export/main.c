@@ -91,27 +91,6 @@ static bool ends_with(const char *s, const char *suffix)
 	return n >= m && strcmp(s + n - m, suffix) == 0;
 }
 
-/* SCENE's base name with its extension replaced by .pov. */
-static char *default_output(const char *scene_path)
-{
-	const char *base, *dot;
-	size_t len;
-	char *out;
-
-	if (strcmp(scene_path, "-") == 0)
-		scene_path = "stdin";
-	base = strrchr(scene_path, '/');
-	base = base ? base + 1 : scene_path;
-	dot = strrchr(base, '.');
-	len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-	out = malloc(len + 5);
-	if (out) {
-		memcpy(out, base, len);
-		strcpy(out + len, ".pov");
-	}
-	return out;
-}
-
 static int parse_args(int argc, char **argv, struct options *o)
 {
 	static const struct option longopts[] = {
@@ -167,18 +146,10 @@ static int parse_args(int argc, char **argv, struct options *o)
 			return usage_error("unknown option '%s'", argv[optind - 1]);
 		}
 	}
-	if (o->scene.test_scene) {
-		if (optind != argc)
-			return usage_error("--test-scene takes no SCENE, found '%s'", argv[optind]);
-	} else {
-		if (optind == argc)
-			return usage_error("%s", "no SCENE given");
-		if (optind + 1 != argc)
-			return usage_error("one SCENE expected, found also '%s'", argv[optind + 1]);
-		o->scene_path = argv[optind];
-	}
+	if (cli_scene_operand(&o->scene, argc, argv, optind, &o->scene_path, &d) < 0)
+		return usage_error("%s", d.msg);
 	if (!o->output) {
-		o->output_owned = default_output(o->scene_path ? o->scene_path : "test-scene");
+		o->output_owned = cli_default_output(o->scene_path, ".pov");
 		if (!o->output_owned) {
 			fprintf(stderr, "scene2pov: error: out of memory\n");
 			return EXIT_SCENE;

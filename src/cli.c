@@ -187,6 +187,47 @@ out_destroy:
 	return rc;
 }
 
+int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int first,
+		      const char **path, struct diag *d)
+{
+	*path = NULL;
+	if (o->test_scene) {
+		if (first != argc)
+			return diag_set(d, RT_E_INVALID, "", 0, 0,
+					"--test-scene takes no SCENE, found '%s'", argv[first]);
+		return 0;
+	}
+	if (first == argc)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "no SCENE given");
+	if (first + 1 != argc)
+		return diag_set(d, RT_E_INVALID, "", 0, 0, "one SCENE expected, found also '%s'",
+				argv[first + 1]);
+	*path = argv[first];
+	return 0;
+}
+
+char *cli_default_output(const char *scene_path, const char *suffix)
+{
+	const char *base, *dot;
+	size_t len;
+	char *out;
+
+	if (!scene_path)
+		scene_path = "test-scene";
+	else if (strcmp(scene_path, "-") == 0)
+		scene_path = "stdin";
+	base = strrchr(scene_path, '/');
+	base = base ? base + 1 : scene_path;
+	dot = strrchr(base, '.');
+	len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+	out = malloc(len + strlen(suffix) + 1);
+	if (out) {
+		memcpy(out, base, len);
+		strcpy(out + len, suffix);
+	}
+	return out;
+}
+
 int cli_default_threads(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);

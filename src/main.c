@@ -135,28 +135,6 @@ static void print_note(void *ctx, const struct diag *note)
 		print_diag(note, "note");
 }
 
-/* SCENE's base name with its extension replaced by suffix and .png. */
-static char *default_output(const char *scene_path, const char *suffix)
-{
-	const char *base = strrchr(scene_path, '/');
-	const char *dot;
-	size_t len;
-	char *out;
-
-	if (strcmp(scene_path, "-") == 0)
-		scene_path = "stdin";
-	base = base ? base + 1 : scene_path;
-	dot = strrchr(base, '.');
-	len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-	out = malloc(len + strlen(suffix) + 5);
-	if (out) {
-		memcpy(out, base, len);
-		strcpy(out + len, suffix);
-		strcat(out, ".png");
-	}
-	return out;
-}
-
 /* "X0,Y0,X1,Y1": four integers. */
 static int parse_region(const char *arg, struct options *o, struct diag *d)
 {
@@ -271,7 +249,8 @@ static int resolve_output(struct options *o)
 			return usage_error("--output: with --frames, give a pattern with %%04d or a directory, found '%s'",
 					   o->output);
 	} else if (!o->output) {
-		o->output_owned = default_output(o->scene_path ? o->scene_path : "test-scene", suffix);
+		strcat(suffix, ".png");
+		o->output_owned = cli_default_output(o->scene_path, suffix);
 		if (!o->output_owned) {
 			fprintf(stderr, "whitted: error: out of memory\n");
 			return EXIT_SCENE;
@@ -393,16 +372,8 @@ static int parse_args(int argc, char **argv, struct options *o)
 			return usage_error("unknown option '%s'", argv[optind - 1]);
 		}
 	}
-	if (o->scene.test_scene) {
-		if (optind != argc)
-			return usage_error("--test-scene takes no SCENE, found '%s'", argv[optind]);
-	} else {
-		if (optind == argc)
-			return usage_error("%s", "no SCENE given");
-		if (optind + 1 != argc)
-			return usage_error("one SCENE expected, found also '%s'", argv[optind + 1]);
-		o->scene_path = argv[optind];
-	}
+	if (cli_scene_operand(&o->scene, argc, argv, optind, &o->scene_path, &d) < 0)
+		return usage_error("%s", d.msg);
 	if (o->frame && !o->frames)
 		return usage_error("%s", "--frame K needs --frames N");
 	if (o->frame > o->frames) {

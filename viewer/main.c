@@ -127,17 +127,12 @@ static int parse_args(int argc, char **argv)
 			return usage_error("unknown option '%s'", argv[optind - 1]);
 		}
 	}
+	if (cli_scene_operand(&v.opts, argc, argv, optind, &v.scene_path, &d) < 0)
+		return usage_error("%s", d.msg);
 	if (v.opts.test_scene) {
-		if (optind != argc)
-			return usage_error("--test-scene takes no SCENE, found '%s'", argv[optind]);
 		snprintf(v.scene_name, sizeof(v.scene_name), "test scene");
 		return 0;
 	}
-	if (optind == argc)
-		return usage_error("%s", "no SCENE given");
-	if (optind + 1 != argc)
-		return usage_error("one SCENE expected, found also '%s'", argv[optind + 1]);
-	v.scene_path = argv[optind];
 	/* The capture's command names the file; standard input cannot be
 	 * read a second time. */
 	if (strcmp(v.scene_path, "-") == 0)
