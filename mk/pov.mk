@@ -9,7 +9,7 @@ ALL_TARGETS += $(BUILD)/scene2pov $(BUILD)/imgcmp
 INSTALL_PROGRAMS += scene2pov
 # povray is optional: without it `make check` still runs and says that
 # povcheck was NOT RUN (.ci/run installs it, so CI always runs it).
-OPTIONAL_PKGS += povray
+OPTIONAL_PKGS += povray povray-includes
 
 $(BUILD)/pov_export/%.o: ALL_CFLAGS += -Ipov_export
 

@@ -13,7 +13,7 @@ VIEWER_HAVE_GL := $(shell pkg-config --exists glut gl 2>/dev/null && echo yes)
 VIEWER_GL_CFLAGS := $(shell pkg-config --cflags glut gl 2>/dev/null)
 VIEWER_GL_LIBS := $(shell pkg-config --libs glut gl 2>/dev/null || echo -lglut -lGL)
 
-OPTIONAL_PKGS += freeglut3-dev xvfb xdotool imagemagick
+OPTIONAL_PKGS += freeglut3-dev xvfb xauth xdotool imagemagick
 TEST_BIN += $(VIEWER_TEST_BIN)
 CHECK_TARGETS += viewer-e2e
 INSTALL_PROGRAMS += $(if $(VIEWER_HAVE_GL),whitted-view)
