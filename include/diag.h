@@ -33,8 +33,10 @@ int diag_set(struct diag *d, enum rt_err err, const char *file, int line, int co
 #endif
 	;
 
-/* Formats "FILE:LINE:COL: KIND: MSG" (parts without a value are left out,
- * and "whitted: KIND: MSG" stands for a diagnostic without a file). */
-void diag_format(const struct diag *d, const char *kind, char *buf, unsigned long size);
+/* Formats "FILE:LINE:COL: KIND: MSG" (or "FILE:LINE: KIND: MSG" without a
+ * column); a diagnostic without a line is "PROG: KIND: FILE: MSG", and one
+ * without a file "PROG: KIND: MSG". */
+void diag_format(const struct diag *d, const char *prog, const char *kind, char *buf,
+		 unsigned long size);
 
 #endif

@@ -72,7 +72,7 @@ static void print_diag(const struct diag *d, const char *kind)
 		fprintf(stderr, "scene2pov: %s: %s\n", kind, d->msg);
 		return;
 	}
-	diag_format(d, kind, line, sizeof(line));
+	diag_format(d, "scene2pov", kind, line, sizeof(line));
 	fprintf(stderr, "%s\n", line);
 }
 

@@ -26,12 +26,13 @@ int diag_set(struct diag *d, enum rt_err err, const char *file, int line, int co
 	return -(int)err;
 }
 
-void diag_format(const struct diag *d, const char *kind, char *buf, unsigned long size)
+void diag_format(const struct diag *d, const char *prog, const char *kind, char *buf,
+		 unsigned long size)
 {
 	if (d->file[0] == '\0')
-		snprintf(buf, size, "whitted: %s: %s", kind, d->msg);
+		snprintf(buf, size, "%s: %s: %s", prog, kind, d->msg);
 	else if (d->line <= 0)
-		snprintf(buf, size, "%s: %s: %s", d->file, kind, d->msg);
+		snprintf(buf, size, "%s: %s: %s: %s", prog, kind, d->file, d->msg);
 	else if (d->col <= 0)
 		snprintf(buf, size, "%s:%d: %s: %s", d->file, d->line, kind, d->msg);
 	else

@@ -43,19 +43,19 @@ static void test_diag_format_forms(void **state)
 
 	(void)state;
 	diag_set(&d, RT_E_SYNTAX, "scene.txt", 12, 5, "expected a number, found 'abc'");
-	diag_format(&d, "error", buf, sizeof(buf));
+	diag_format(&d, "whitted", "error", buf, sizeof(buf));
 	assert_string_equal(buf, "scene.txt:12:5: error: expected a number, found 'abc'");
 
 	diag_set(&d, RT_E_SYNTAX, "scene.txt", 40, 0, "ignoring 55 lines after the last light");
-	diag_format(&d, "note", buf, sizeof(buf));
+	diag_format(&d, "whitted", "note", buf, sizeof(buf));
 	assert_string_equal(buf, "scene.txt:40: note: ignoring 55 lines after the last light");
 
 	diag_set(&d, RT_E_IO, "out.png", 0, 0, "cannot write: No such file or directory");
-	diag_format(&d, "error", buf, sizeof(buf));
-	assert_string_equal(buf, "out.png: error: cannot write: No such file or directory");
+	diag_format(&d, "whitted", "error", buf, sizeof(buf));
+	assert_string_equal(buf, "whitted: error: out.png: cannot write: No such file or directory");
 
 	diag_set(&d, RT_E_INVALID, "", 3, 4, "the up vector is zero");
-	diag_format(&d, "error", buf, sizeof(buf));
+	diag_format(&d, "whitted", "error", buf, sizeof(buf));
 	assert_string_equal(buf, "whitted: error: the up vector is zero");
 }
 
@@ -66,7 +66,7 @@ static void test_diag_format_truncates(void **state)
 
 	(void)state;
 	diag_set(&d, RT_E_SYNTAX, "scene.txt", 1, 2, "a long message that does not fit");
-	diag_format(&d, "error", buf, sizeof(buf));
+	diag_format(&d, "whitted", "error", buf, sizeof(buf));
 	assert_int_equal(strlen(buf), sizeof(buf) - 1);
 	assert_memory_equal(buf, "scene.txt:1:2: ", 15);
 }

@@ -75,7 +75,7 @@ static void print_diag(const struct diag *d, const char *kind)
 {
 	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
 
-	diag_format(d, kind, line, sizeof(line));
+	diag_format(d, "whitted-view", kind, line, sizeof(line));
 	fprintf(stderr, "%s\n", line);
 }
 

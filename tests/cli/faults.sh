@@ -39,12 +39,12 @@ fault() {
 clean_wd
 run -s 8 -o nodir/x.png "$SCENE"
 check "missing dir exit" [ "$rc" -eq 1 ]
-check "missing dir message" grep -qx 'nodir/x.png: error: cannot write: No such file or directory' "$T/err"
+check "missing dir message" grep -qx 'whitted: error: nodir/x.png: cannot write: No such file or directory' "$T/err"
 check "missing dir nothing created" wd_empty
 printf 'a file\n' >"$T/wd/plain"
 run -s 8 -o plain/x.png "$SCENE"
 check "dir is a file exit" [ "$rc" -eq 1 ]
-check "dir is a file message" grep -qx 'plain/x.png: error: cannot write: Not a directory' "$T/err"
+check "dir is a file message" grep -qx 'whitted: error: plain/x.png: cannot write: Not a directory' "$T/err"
 check "dir is a file untouched" [ "$(cat "$T/wd/plain")" = 'a file' ]
 
 # The output is a directory.
@@ -52,7 +52,7 @@ clean_wd
 mkdir "$T/wd/d.png"
 run -s 8 -o d.png "$SCENE"
 check "output is a directory exit" [ "$rc" -eq 1 ]
-check "output is a directory message" grep -qx 'd.png: error: cannot write: Is a directory' "$T/err"
+check "output is a directory message" grep -qx 'whitted: error: d.png: cannot write: Is a directory' "$T/err"
 check "output is a directory kept" [ -d "$T/wd/d.png" -a "$(wd_files)" = d.png ]
 # A 254-byte name is valid; its temporary name must be too.
 clean_wd
@@ -91,7 +91,7 @@ for existing in no yes; do
 		break
 	fi
 	check "read-only dir exit ($existing)" [ "$rc" -eq 1 ]
-	check "read-only dir message ($existing)" grep -qx "$T/ro/x.png: error: cannot write: Permission denied" "$T/err"
+	check "read-only dir message ($existing)" grep -qx "whitted: error: $T/ro/x.png: cannot write: Permission denied" "$T/err"
 	if [ $existing = yes ]; then
 		check "read-only dir existing untouched" [ "$(cat "$T/ro/x.png")" = old ]
 		check "read-only dir nothing else" [ "$(ls -A "$T/ro")" = x.png ]
@@ -113,7 +113,7 @@ for f in png bmp ppm; do
 		(ulimit -f 1 && cd "$T/fs" && exec "$W" -s 128 -o "x.$f" "$SCENE") >"$T/out" 2>"$T/err"
 		rc=$?
 		check "file-size limit $f exit ($existing)" [ "$rc" -eq 1 ]
-		check "file-size limit $f message ($existing)" grep -qE "^x\.$f: error: cannot write.*: File too large$" "$T/err"
+		check "file-size limit $f message ($existing)" grep -qE "^whitted: error: x\.$f: cannot write.*: File too large$" "$T/err"
 		if [ $existing = yes ]; then
 			check "file-size limit $f existing untouched" [ "$(cat "$T/fs/x.$f")" = old ]
 			check "file-size limit $f no temporary" [ "$(ls -A "$T/fs")" = "x.$f" ]
@@ -127,7 +127,7 @@ done
 rm -rf "$T/fs" && mkdir -p "$T/fs"
 (ulimit -f 1 && cd "$T/fs" && exec "$W" -s 64 -o x.png "$SCENE") >"$T/out" 2>"$T/err"
 check "file-size limit at the flush exit" [ $? -eq 1 ]
-check "file-size limit at the flush message" grep -qx 'x.png: error: cannot write: File too large' "$T/err"
+check "file-size limit at the flush message" grep -qx 'whitted: error: x.png: cannot write: File too large' "$T/err"
 check "file-size limit at the flush nothing left" [ -z "$(ls -A "$T/fs")" ]
 
 # A full device, written in place.
@@ -135,7 +135,7 @@ for f in png bmp ppm; do
 	"$W" -s 64 -o /dev/full --format $f "$SCENE" >"$T/out" 2>"$T/err"
 	rc=$?
 	check "dev-full $f exit" [ "$rc" -eq 1 ]
-	check "dev-full $f message" grep -qE '^/dev/full: error: cannot write.*: No space left on device$' "$T/err"
+	check "dev-full $f message" grep -qE '^whitted: error: /dev/full: cannot write.*: No space left on device$' "$T/err"
 done
 
 # A scene error leaves an existing output alone too.

@@ -40,8 +40,8 @@ expect_error unknown-option 2 "unknown option '--bogus'" --bogus "$SCENE"
 expect_error unknown-short-option 2 "unknown option '-x'" -x "$SCENE"
 expect_error option-without-value 2 "option '-o' needs a value" "$SCENE" -o
 expect_error long-option-without-value 2 "option '--size' needs a value" "$SCENE" --size
-expect_error missing-scene 1 'nosuch.txt: error: cannot open: No such file or directory' nosuch.txt
-expect_error scene-is-directory 1 'error: is a directory' "$T"
+expect_error missing-scene 1 'whitted: error: nosuch.txt: cannot open: No such file or directory' nosuch.txt
+expect_error scene-is-directory 1 ': is a directory, not a scene file' "$T"
 expect_error test-scene-with-file 2 '--test-scene takes no SCENE' --test-scene "$SCENE"
 
 # Every option with a value rejects non-numbers, trailing garbage and
@@ -212,7 +212,7 @@ head -c 10000000 /dev/zero | tr '\0' 7 >"$T/token.txt"
 hostile "10 MB single token" 'token\.txt:1:1: error: token too long' "$T/token.txt"
 hostile "binary file" '^.*/whitted:1:1: error: expected an integer \(recursion level\)' "$W"
 truncate -s 300M "$T/sparse.txt"
-hostile "300 MiB file (sparse) refused by size" 'sparse\.txt: error: the file is larger than the limit of 268435456 bytes' "$T/sparse.txt"
+hostile "300 MiB file (sparse) refused by size" 'whitted: error: [^ ]*sparse\.txt: the file is larger than the limit of 268435456 bytes' "$T/sparse.txt"
 rm -f "$T/sparse.txt"
 yes '# a comment' | head -n 1000000 >"$T/comments.txt"
 hostile "a million comment lines" 'comments\.txt:1000001:1: error: .*the file has no data' "$T/comments.txt"
@@ -220,7 +220,7 @@ printf '4\n16\n10000000\nsphere 0 0 10 1 1 1 1 0 0 0 0 0\n' >"$T/count.txt"
 hostile "object count of ten million, one object" 'count\.txt:5:1: error: expected an object keyword .* for object 2 of 10000000, found end of file' "$T/count.txt"
 printf '4\n16\n0\n100000\n0 0 100\n' >"$T/lights.txt"
 hostile "light count of 100000, one light" 'lights\.txt:6:1: error: .*found end of file \(100000 lights need 600000 numbers' "$T/lights.txt"
-hostile "scene from /dev/zero" '^/dev/zero: error: the file is larger than the limit' /dev/zero
+hostile "scene from /dev/zero" '^whitted: error: /dev/zero: the file is larger than the limit' /dev/zero
 hostile "scene is /dev/null" '^/dev/null:1:1: error: .*\(the file is empty\)' /dev/null
 rm -f "$T/token.txt" "$T/comments.txt"
 

@@ -20,7 +20,7 @@ static void fuzz_check_diag(const struct diag *d)
 {
 	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
 
-	diag_format(d, "error", line, sizeof(line));
+	diag_format(d, "whitted", "error", line, sizeof(line));
 	if (strlen(line) >= sizeof(line) || memchr(d->msg, '\n', strlen(d->msg)))
 		__builtin_trap();
 }
