@@ -1,12 +1,12 @@
 /* Camera paths for animations and the names of their frames. */
 #define _POSIX_C_SOURCE 200809L
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "alloc.h"
+#include "file.h"
 #include "cli.h"
 #include "frames.h"
 
@@ -136,49 +136,15 @@ static int frames_parse_line(const char *path, int line, char *s, struct camera_
 
 static int frames_read(const char *path, char **out, struct diag *d)
 {
-	char *buf = NULL, *p;
-	size_t len = 0, cap = 0, got;
-	FILE *f;
-	int rc = 0;
+	size_t len;
+	int rc = file_read_all(path, "keyframe file", FRAMES_MAX_PATH_BYTES, out, &len, d);
 
-	errno = 0;
-	f = fopen(path, "rb");
-	if (!f)
-		return diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
-				errno ? strerror(errno) : "out of memory");
-	for (;;) {
-		if (cap - len < 2) {
-			if (cap >= (size_t)FRAMES_MAX_PATH_BYTES) {
-				rc = diag_set(d, RT_E_RANGE, path, 0, 0, "larger than %ld bytes",
-					      FRAMES_MAX_PATH_BYTES);
-				break;
-			}
-			cap = cap ? cap * 2 : 4096;
-			p = rt_reallocarray(buf, cap, 1);
-			if (!p) {
-				rc = diag_set(d, RT_E_NOMEM, path, 0, 0, "out of memory");
-				break;
-			}
-			buf = p;
-		}
-		got = fread(buf + len, 1, cap - len - 1, f);
-		len += got;
-		if (got == 0) {
-			if (ferror(f))
-				rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot read: %s", strerror(errno));
-			break;
-		}
-	}
-	fclose(f);
-	if (rc == 0 && memchr(buf, '\0', len))
+	if (rc == 0 && memchr(*out, '\0', len)) {
+		rt_free(*out);
+		*out = NULL;
 		rc = diag_set(d, RT_E_SYNTAX, path, 0, 0, "a NUL byte in a text file");
-	if (rc < 0) {
-		rt_free(buf);
-		return rc;
 	}
-	buf[len] = '\0';
-	*out = buf;
-	return 0;
+	return rc;
 }
 
 int frames_path_load(const char *path, const struct camera_params *base,

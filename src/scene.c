@@ -1,14 +1,13 @@
 /* The scene model: ownership of shapes and lights, loading from files and
  * the built-in test scene. */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "accel.h"
 #include "alloc.h"
+#include "file.h"
 #include "scene.h"
 
 struct scene *scene_create(const char *name)
@@ -101,89 +100,16 @@ int scene_add_floor(struct scene *s, double width, double tile, struct diag *d)
 	return scene_add_shape(s, floor, d);
 }
 
-/* Reads a whole stream into memory, refusing more than RT_MAX_SCENE_BYTES.
- * A regular file's size is known: one that is too large is refused before
- * anything is read, and the buffer is sized for it in one go.  A pipe or a
- * device is read in growing chunks up to the limit. */
-static int scene_read_stream(FILE *f, const char *path, char **out, size_t *out_len,
-			     struct diag *d)
-{
-	size_t cap = 65536, len = 0;
-	struct stat st;
-	char *buf;
-
-	if (fstat(fileno(f), &st) == 0) {
-		if (S_ISDIR(st.st_mode))
-			return diag_set(d, RT_E_IO, path, 0, 0, "is a directory, not a scene file");
-		if (S_ISREG(st.st_mode)) {
-			if (st.st_size > RT_MAX_SCENE_BYTES)
-				return diag_set(d, RT_E_RANGE, path, 0, 0,
-						"the file is larger than the limit of %ld bytes",
-						RT_MAX_SCENE_BYTES);
-			if ((size_t)st.st_size >= cap)
-				cap = (size_t)st.st_size + 1;
-		}
-	}
-	buf = rt_malloc(cap);
-	if (!buf)
-		return diag_set(d, RT_E_NOMEM, path, 0, 0, "out of memory reading the file");
-	for (;;) {
-		size_t n;
-		if (len == cap) {
-			char *p;
-			if (cap > (size_t)RT_MAX_SCENE_BYTES) {
-				rt_free(buf);
-				return diag_set(d, RT_E_RANGE, path, 0, 0,
-						"the file is larger than the limit of %ld bytes",
-						RT_MAX_SCENE_BYTES);
-			}
-			cap = cap * 2 > (size_t)RT_MAX_SCENE_BYTES + 1 ? (size_t)RT_MAX_SCENE_BYTES + 1 : cap * 2;
-			p = rt_reallocarray(buf, cap, 1);
-			if (!p) {
-				rt_free(buf);
-				return diag_set(d, RT_E_NOMEM, path, 0, 0, "out of memory reading the file");
-			}
-			buf = p;
-		}
-		n = fread(buf + len, 1, cap - len, f);
-		len += n;
-		if (n == 0)
-			break;
-	}
-	if (ferror(f)) {
-		int err = errno;
-		rt_free(buf);
-		return diag_set(d, RT_E_IO, path, 0, 0, "cannot read: %s", strerror(err));
-	}
-	if (len > (size_t)RT_MAX_SCENE_BYTES) {
-		rt_free(buf);
-		return diag_set(d, RT_E_RANGE, path, 0, 0, "the file is larger than the limit of %ld bytes",
-				RT_MAX_SCENE_BYTES);
-	}
-	*out = buf;
-	*out_len = len;
-	return 0;
-}
-
 int scene_load(const char *path, scene_note_fn *note, void *note_ctx,
 	       struct scene **out, struct diag *d)
 {
-	bool is_stdin = strcmp(path, "-") == 0;
-	const char *name = is_stdin ? "<stdin>" : path;
-	char *text = NULL;
-	size_t len = 0;
-	FILE *f;
+	const char *name = strcmp(path, "-") == 0 ? "<stdin>" : path;
+	char *text;
+	size_t len;
 	int rc;
 
 	*out = NULL;
-	errno = 0;
-	f = is_stdin ? stdin : fopen(path, "rb");
-	if (!f)
-		return diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
-				errno ? strerror(errno) : "out of memory");
-	rc = scene_read_stream(f, name, &text, &len, d);
-	if (!is_stdin)
-		fclose(f);
+	rc = file_read_all(path, "scene file", RT_MAX_SCENE_BYTES, &text, &len, d);
 	if (rc < 0)
 		return rc;
 	rc = scene_parse(name, text, len, note, note_ctx, out, d);

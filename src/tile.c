@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "alloc.h"
+#include "file.h"
 #include "hash.h"
 #include "tile.h"
 
@@ -320,48 +321,11 @@ static int tile_scan(const char *path, const unsigned char *b, size_t n, struct 
 /* Reads a whole file into memory. */
 static int tile_read_file(const char *path, unsigned char **out, size_t *out_len, struct diag *d)
 {
-	unsigned char *buf = NULL, *p;
-	size_t len = 0, cap = 0, got;
-	FILE *f;
-	int rc = 0;
+	char *buf;
+	int rc = file_read_all(path, "tile", TILE_MAX_FILE_BYTES, &buf, out_len, d);
 
-	*out = NULL;
-	errno = 0;
-	f = fopen(path, "rb");
-	if (!f)
-		return diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
-				errno ? strerror(errno) : "out of memory");
-	for (;;) {
-		if (len == cap) {
-			if (cap >= (size_t)TILE_MAX_FILE_BYTES) {
-				rc = diag_set(d, RT_E_RANGE, path, 0, 0, "larger than %ld bytes",
-					      TILE_MAX_FILE_BYTES);
-				break;
-			}
-			cap = cap ? cap * 2 : 65536;
-			p = rt_reallocarray(buf, cap, 1);
-			if (!p) {
-				rc = diag_set(d, RT_E_NOMEM, path, 0, 0, "out of memory");
-				break;
-			}
-			buf = p;
-		}
-		got = fread(buf + len, 1, cap - len, f);
-		len += got;
-		if (got == 0) {
-			if (ferror(f))
-				rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot read: %s", strerror(errno));
-			break;
-		}
-	}
-	fclose(f);
-	if (rc < 0) {
-		rt_free(buf);
-		return rc;
-	}
-	*out = buf;
-	*out_len = len;
-	return 0;
+	*out = (unsigned char *)buf;
+	return rc;
 }
 
 /* Decodes the pixels with libpng's simplified API. */

@@ -126,7 +126,7 @@ rm -f out.png
 expect_fail "merge a plain PNG" 1 out.png "not a whitted tile" "$W" merge -o out.png full37.png "$2" "$3" "$4"
 expect_fail "merge a text file" 1 out.png "not a PNG file" "$W" merge -o out.png scene.txt "$2" "$3" "$4"
 expect_fail "merge a missing file" 1 out.png "cannot open" "$W" merge -o out.png t/nothere.png "$2" "$3" "$4"
-expect_fail "merge a directory" 1 out.png "cannot read" "$W" merge -o out.png t "$2" "$3" "$4"
+expect_fail "merge a directory" 1 out.png "is a directory, not a tile" "$W" merge -o out.png t "$2" "$3" "$4"
 head -c 60 "$1" >t/short.png
 expect_fail "merge a truncated tile" 1 out.png "truncated PNG" "$W" merge -o out.png t/short.png "$2" "$3" "$4"
 sz=$(wc -c <"$1")
