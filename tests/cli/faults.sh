@@ -78,12 +78,16 @@ chmod 755 "$T"
 mkdir -p "$T/ro"
 cp "$SCENE" "$T/scene.txt"
 chmod 644 "$T/scene.txt"
+# A copy of the program, so that nobody can run it wherever the checkout is
+# (a home directory of mode 700, say).
+cp "$W" "$T/whitted"
+chmod 755 "$T/whitted"
 for existing in no yes; do
 	rm -f "$T/ro/x.png"
 	chmod 755 "$T/ro"
 	[ $existing = yes ] && printf 'old\n' >"$T/ro/x.png" && chmod 666 "$T/ro/x.png"
 	chmod 555 "$T/ro"
-	ro_run "$W" -s 8 -o "$T/ro/x.png" "$T/scene.txt" >"$T/out" 2>"$T/err"
+	ro_run "$T/whitted" -s 8 -o "$T/ro/x.png" "$T/scene.txt" >"$T/out" 2>"$T/err"
 	rc=$?
 	if [ $rc -eq 125 ]; then
 		echo "faults: NOT RUN: read-only directory as root without setpriv"
