@@ -25,6 +25,35 @@ void support_assert_vec3_near(struct vec3 a, struct vec3 b, double eps, const ch
 	}
 }
 
+struct ray support_ray(double ox, double oy, double oz, double dx, double dy, double dz)
+{
+	struct ray r;
+
+	r.origin = vec3_make(ox, oy, oz);
+	r.dir = vec3_make(dx, dy, dz);
+	return r;
+}
+
+char *support_export_pov(const struct shape *s, enum pov_finish finish)
+{
+	struct pov_options opt = { finish };
+	FILE *f = tmpfile();
+	char *text;
+	long n;
+
+	assert_non_null(f);
+	assert_int_equal(shape_export_pov(s, f, &opt), 0);
+	n = ftell(f);
+	assert_true(n > 0);
+	rewind(f);
+	text = malloc((size_t)n + 1);
+	assert_non_null(text);
+	assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
+	text[n] = '\0';
+	fclose(f);
+	return text;
+}
+
 struct scene *support_parse(const char *text)
 {
 	struct scene *s = NULL;

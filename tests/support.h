@@ -10,6 +10,8 @@
 
 #include "diag.h"
 #include "material.h"
+#include "pov.h"
+#include "ray.h"
 #include "scene.h"
 #include "vec3.h"
 
@@ -22,6 +24,11 @@ void support_assert_near(double a, double b, double eps, const char *expr,
 			 const char *file, int line);
 void support_assert_vec3_near(struct vec3 a, struct vec3 b, double eps, const char *expr,
 			      const char *file, int line);
+
+/* A ray with exactly this origin and (not normalised) direction. */
+struct ray support_ray(double ox, double oy, double oz, double dx, double dy, double dz);
+/* The text a shape exports to POV-Ray, NUL-terminated; the caller frees it. */
+char *support_export_pov(const struct shape *s, enum pov_finish finish);
 
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */

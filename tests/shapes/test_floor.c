@@ -8,15 +8,6 @@
 #include "pov.h"
 #include "support.h"
 
-static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-	struct ray r;
-
-	r.origin = vec3_make(ox, oy, oz);
-	r.dir = vec3_make(dx, dy, dz);
-	return r;
-}
-
 /* The assignment's Floor(1000, 20). */
 static int setup_floor(void **state)
 {
@@ -42,9 +33,9 @@ static bool white_at(const struct shape *s, double x, double y)
 
 static void test_floor_hit_from_above_and_below(void **state)
 {
-	struct ray down = ray_make(3, 4, 10, 0, 0, -1);
-	struct ray up = ray_make(3, 4, -10, 0, 0, 1);
-	struct ray slant = ray_make(0, 0, 10, 3, 4, -5);
+	struct ray down = support_ray(3, 4, 10, 0, 0, -1);
+	struct ray up = support_ray(3, 4, -10, 0, 0, 1);
+	struct ray slant = support_ray(0, 0, 10, 3, 4, -5);
 	double t_max = INFINITY;
 
 	assert_true(shape_intersect(*state, &down, 0.0, &t_max));
@@ -60,9 +51,9 @@ static void test_floor_hit_from_above_and_below(void **state)
 
 static void test_floor_miss_parallel_behind(void **state)
 {
-	struct ray parallel = ray_make(0, 0, 10, 1, 0, 0);
-	struct ray in_plane = ray_make(0, 0, 0, 1, 0, 0);
-	struct ray away = ray_make(0, 0, 10, 0, 0, 1);
+	struct ray parallel = support_ray(0, 0, 10, 1, 0, 0);
+	struct ray in_plane = support_ray(0, 0, 0, 1, 0, 0);
+	struct ray away = support_ray(0, 0, 10, 0, 0, 1);
 	double t_max = 42.0;
 
 	assert_false(shape_intersect(*state, &parallel, 0.0, &t_max));
@@ -73,7 +64,7 @@ static void test_floor_miss_parallel_behind(void **state)
 
 static void test_floor_t_interval(void **state)
 {
-	struct ray down = ray_make(3, 4, 10, 0, 0, -1);
+	struct ray down = support_ray(3, 4, 10, 0, 0, -1);
 	double t_max = 10.0;
 
 	/* Open interval: a hit at exactly t_max or t_min does not count. */
@@ -99,7 +90,7 @@ static void test_floor_extent_half_open(void **state)
 	size_t i;
 
 	for (i = 0; i < sizeof(in) / sizeof(in[0]); i++) {
-		struct ray r = ray_make(in[i][0], in[i][1], 10, 0, 0, -1);
+		struct ray r = support_ray(in[i][0], in[i][1], 10, 0, 0, -1);
 		t_max = INFINITY;
 		if (!shape_intersect(*state, &r, 0.0, &t_max)) {
 			print_error("(%g, %g) is on the floor\n", in[i][0], in[i][1]);
@@ -107,7 +98,7 @@ static void test_floor_extent_half_open(void **state)
 		}
 	}
 	for (i = 0; i < sizeof(out) / sizeof(out[0]); i++) {
-		struct ray r = ray_make(out[i][0], out[i][1], 10, 0, 0, -1);
+		struct ray r = support_ray(out[i][0], out[i][1], 10, 0, 0, -1);
 		t_max = INFINITY;
 		if (shape_intersect(*state, &r, 0.0, &t_max)) {
 			print_error("(%g, %g) is off the floor\n", out[i][0], out[i][1]);

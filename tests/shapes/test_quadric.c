@@ -14,15 +14,6 @@ static const struct material mat = { { 0.0, 0.0, 1.0 }, 0.4, 0.2, 0.1, 0.3, 3.0 
 /* x^2 + y^2 + z^2 - 4 = 0: the radius-2 sphere at the origin. */
 static const double sphere4[10] = { 1, 1, 1, 0, 0, 0, 0, 0, 0, -4 };
 
-static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-	struct ray r;
-
-	r.origin = vec3_make(ox, oy, oz);
-	r.dir = vec3_make(dx, dy, dz);
-	return r;
-}
-
 static struct shape *quadric(const double coef[10], double rx, double ry, double rz,
 			     double lx, double ly, double lz)
 {
@@ -32,31 +23,12 @@ static struct shape *quadric(const double coef[10], double rx, double ry, double
 	return s;
 }
 
-static char *export_text(const struct shape *s)
-{
-	struct pov_options opt = { RT_POV_FINISH_PLAIN };
-	FILE *f = tmpfile();
-	char *text;
-	long n;
-
-	assert_non_null(f);
-	assert_int_equal(shape_export_pov(s, f, &opt), 0);
-	n = ftell(f);
-	rewind(f);
-	text = malloc((size_t)n + 1);
-	assert_non_null(text);
-	assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-	text[n] = '\0';
-	fclose(f);
-	return text;
-}
-
 static void test_quadric_unclipped_sphere(void **state)
 {
 	struct shape *s = quadric(sphere4, 0, 0, 0, 0, 0, 0);
-	struct ray r = ray_make(0, 0, -10, 0, 0, 1);
-	struct ray miss = ray_make(0, 2.5, -10, 0, 0, 1);
-	struct ray behind = ray_make(0, 0, 10, 0, 0, 1);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
+	struct ray miss = support_ray(0, 2.5, -10, 0, 0, 1);
+	struct ray behind = support_ray(0, 0, 10, 0, 0, 1);
 	double t_max = 100.0;
 
 	(void)state;
@@ -78,9 +50,9 @@ static void test_quadric_unclipped_sphere(void **state)
 static void test_quadric_tangent_inside_non_unit(void **state)
 {
 	struct shape *s = quadric(sphere4, 0, 0, 0, 0, 0, 0);
-	struct ray graze = ray_make(2, 0, -10, 0, 0, 1);
-	struct ray inside = ray_make(0, 0, 0, 0, 1, 0);
-	struct ray fast = ray_make(0, 0, -10, 0, 0, 2);
+	struct ray graze = support_ray(2, 0, -10, 0, 0, 1);
+	struct ray inside = support_ray(0, 0, 0, 0, 1, 0);
+	struct ray fast = support_ray(0, 0, -10, 0, 0, 2);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -104,8 +76,8 @@ static void test_quadric_clipped_near_root_falls_through(void **state)
 	 * t = 8) is clipped and the far one (z = 2, t = 12) is the hit, the
 	 * inside of the dome. */
 	struct shape *s = quadric(sphere4, 0, 0, 0, 0, 0, 5);
-	struct ray r = ray_make(0, 0, -10, 0, 0, 1);
-	struct ray slant = ray_make(1, 0, -10, 0, 0, 1);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
+	struct ray slant = support_ray(1, 0, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -137,8 +109,8 @@ static void test_quadric_clip_box_inclusive(void **state)
 	/* z in [-2, 0]: the near root is exactly z = -2 (t = 8, computed
 	 * exactly: 8 = 10 - 2), on the box's face, and counts. */
 	struct shape *s = quadric(sphere4, 0, 0, -2, 0, 0, 2);
-	struct ray up = ray_make(0, 0, -10, 0, 0, 1);
-	struct ray down = ray_make(0, 0, 10, 0, 0, -1);
+	struct ray up = support_ray(0, 0, -10, 0, 0, 1);
+	struct ray down = support_ray(0, 0, 10, 0, 0, -1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -180,7 +152,7 @@ static void test_quadric_clip_each_axis(void **state)
 		o[axis] = -10;
 		d[axis] = 1;
 		s = quadric(sphere4, 0, 0, 0, ext[0], ext[1], ext[2]);
-		r = ray_make(o[0], o[1], o[2], d[0], d[1], d[2]);
+		r = support_ray(o[0], o[1], o[2], d[0], d[1], d[2]);
 		assert_true(shape_intersect(s, &r, 0.0, &t_max));
 		assert_near(t_max, 12.0, 1e-12);
 		/* Clipped on one axis: unbounded. */
@@ -217,9 +189,9 @@ static void test_quadric_clip_on_three_axes(void **state)
 	struct shape *s = quadric(sphere4, 0, 0, 0, 5, 5, 5);
 	/* Along z at x = y = 1: z = +-sqrt(2), only +sqrt(2) is in the box,
 	 * t = 10 + sqrt(2). */
-	struct ray in = ray_make(1, 1, -10, 0, 0, 1);
+	struct ray in = support_ray(1, 1, -10, 0, 0, 1);
 	/* At x = -1 the whole line is outside the box. */
-	struct ray out = ray_make(-1, 1, -10, 0, 0, 1);
+	struct ray out = support_ray(-1, 1, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -242,9 +214,9 @@ static void test_quadric_linear_case(void **state)
 	struct shape *p = quadric(plane, 0, 0, 0, 0, 0, 0);
 	struct shape *q = quadric(para, 0, 0, 0, 0, 0, 0);
 	struct shape *c = quadric(cyl, 0, 0, 0, 0, 0, 0);
-	struct ray up = ray_make(0.5, 0.5, 0, 0, 0, 1);
-	struct ray r = ray_make(1, 0, -5, 0, 0, 1);
-	struct ray axis = ray_make(1, 0, -5, 0, 0, 1);
+	struct ray up = support_ray(0.5, 0.5, 0, 0, 0, 1);
+	struct ray r = support_ray(1, 0, -5, 0, 0, 1);
+	struct ray axis = support_ray(1, 0, -5, 0, 0, 1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -309,7 +281,7 @@ static void test_quadric_cross_terms(void **state)
 
 	(void)state;
 	s = quadric(hyp, 0, 0, 0, 0, 0, 0);
-	r = ray_make(-1, 0.5, 0, 1, 0, 0);
+	r = support_ray(-1, 0.5, 0, 1, 0, 0);
 	t_max = INFINITY;
 	assert_true(shape_intersect(s, &r, 0.0, &t_max));
 	assert_near(t_max, 3.0, 1e-12);
@@ -318,13 +290,13 @@ static void test_quadric_cross_terms(void **state)
 			 vec3_make(0.5 / sqrt(4.25), 2 / sqrt(4.25), 0), 1e-15);
 	shape_destroy(s);
 	s = quadric(xz, 0, 0, 0, 0, 0, 0);
-	r = ray_make(0.5, 0, -1, 0, 0, 1);
+	r = support_ray(0.5, 0, -1, 0, 0, 1);
 	t_max = INFINITY;
 	assert_true(shape_intersect(s, &r, 0.0, &t_max));
 	assert_near(t_max, 3.0, 1e-12);
 	shape_destroy(s);
 	s = quadric(yz, 0, 0, 0, 0, 0, 0);
-	r = ray_make(0, -1, 0.25, 0, 1, 0);
+	r = support_ray(0, -1, 0.25, 0, 1, 0);
 	t_max = INFINITY;
 	assert_true(shape_intersect(s, &r, 0.0, &t_max));
 	assert_near(t_max, 5.0, 1e-12);
@@ -343,7 +315,7 @@ static void test_quadric_parse(void **state)
 	/* (x-10)^2 + (y-10)^2 + (z-10)^2 = 100: the sphere of radius 10 at
 	 * (10, 10, 10), clipped to z in [0, 5].  Along z at x = y = 10 the
 	 * roots are z = 0 and 20; z = 0 is on the box's face. */
-	struct ray r = ray_make(10, 10, -10, 0, 0, 1);
+	struct ray r = support_ray(10, 10, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -364,7 +336,7 @@ static void test_quadric_export_pov(void **state)
 	struct shape *s = quadric(coef, -1, 0, 2, 3, 0, 4);
 	struct shape *u = quadric(coef, 0, 0, 0, 0, 0, 0);
 	double v[10], hx, lx, hz, lz;
-	char *text = export_text(s), *clip;
+	char *text = support_export_pov(s, RT_POV_FINISH_PLAIN), *clip;
 
 	(void)state;
 	assert_int_equal(sscanf(text, "quadric { <%lf,%lf,%lf>, <%lf,%lf,%lf>, <%lf,%lf,%lf>, %lf",
@@ -392,7 +364,7 @@ static void test_quadric_export_pov(void **state)
 	assert_near(lz, -2, 0.0);
 	assert_null(strstr(text, "plane { y"));
 	free(text);
-	text = export_text(u);
+	text = support_export_pov(u, RT_POV_FINISH_PLAIN);
 	assert_null(strstr(text, "clipped_by"));
 	assert_non_null(strstr(text, "texture {"));
 	free(text);

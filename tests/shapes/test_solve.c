@@ -5,15 +5,6 @@
 #include "shapes/solve.h"
 #include "support.h"
 
-static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-	struct ray r;
-
-	r.origin = vec3_make(ox, oy, oz);
-	r.dir = vec3_make(dx, dy, dz);
-	return r;
-}
-
 static void test_solve_quadratic_two_roots_ascending(void **state)
 {
 	double roots[2];
@@ -98,7 +89,7 @@ static void test_solve_quadratic_cancellation(void **state)
 
 static void test_solve_ray_sphere_hit_near_root(void **state)
 {
-	struct ray r = ray_make(0, 0, -10, 0, 0, 1);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
 	double t = -1;
 
 	(void)state;
@@ -121,9 +112,9 @@ static void test_solve_ray_sphere_hit_near_root(void **state)
 
 static void test_solve_ray_sphere_inside_behind_miss(void **state)
 {
-	struct ray inside = ray_make(0, 0, 0, 0, 0, 1);
-	struct ray behind = ray_make(0, 0, 10, 0, 0, 1);
-	struct ray miss = ray_make(3, 0, -10, 0, 0, 1);
+	struct ray inside = support_ray(0, 0, 0, 0, 0, 1);
+	struct ray behind = support_ray(0, 0, 10, 0, 0, 1);
+	struct ray miss = support_ray(3, 0, -10, 0, 0, 1);
 	double t = -1;
 
 	(void)state;
@@ -138,8 +129,8 @@ static void test_solve_ray_sphere_inside_behind_miss(void **state)
 
 static void test_solve_ray_sphere_tangent(void **state)
 {
-	struct ray graze = ray_make(2, 0, -10, 0, 0, 1);
-	struct ray past = ray_make(2.000001, 0, -10, 0, 0, 1);
+	struct ray graze = support_ray(2, 0, -10, 0, 0, 1);
+	struct ray past = support_ray(2.000001, 0, -10, 0, 0, 1);
 	double t = -1;
 
 	(void)state;
@@ -152,8 +143,8 @@ static void test_solve_ray_sphere_tangent(void **state)
 
 static void test_solve_ray_sphere_non_unit_direction(void **state)
 {
-	struct ray r = ray_make(0, 0, -10, 0, 0, 2);
-	struct ray slanted = ray_make(-10, 0, -10, 3, 0, 3);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 2);
+	struct ray slanted = support_ray(-10, 0, -10, 3, 0, 3);
 	double t = -1;
 
 	(void)state;
@@ -169,7 +160,7 @@ static void test_solve_ray_sphere_non_unit_direction(void **state)
 
 static void test_solve_ray_sphere_small_and_far(void **state)
 {
-	struct ray r = ray_make(0.5, 0, 0, 0, 0, 1);
+	struct ray r = support_ray(0.5, 0, 0, 0, 0, 1);
 	double t = -1;
 
 	(void)state;
@@ -182,8 +173,8 @@ static void test_solve_ray_sphere_small_and_far(void **state)
 static void test_solve_ray_triangle_both_sides(void **state)
 {
 	struct vec3 v0 = vec3_make(0, 0, 0), e1 = vec3_make(1, 0, 0), e2 = vec3_make(0, 1, 0);
-	struct ray above = ray_make(0.25, 0.25, 5, 0, 0, -1);
-	struct ray below = ray_make(0.25, 0.25, -5, 0, 0, 1);
+	struct ray above = support_ray(0.25, 0.25, 5, 0, 0, -1);
+	struct ray below = support_ray(0.25, 0.25, -5, 0, 0, 1);
 	double t = -1;
 
 	(void)state;
@@ -211,7 +202,7 @@ static void test_solve_ray_triangle_edges_inclusive(void **state)
 	/* Straight down onto the unit right triangle in z = 0: u = x and
 	 * v = y exactly, t = 5. */
 	for (i = 0; i < sizeof(on) / sizeof(on[0]); i++) {
-		struct ray r = ray_make(on[i][0], on[i][1], 5, 0, 0, -1);
+		struct ray r = support_ray(on[i][0], on[i][1], 5, 0, 0, -1);
 		t = -1;
 		if (!solve_ray_triangle(&r, v0, e1, e2, 0.0, INFINITY, &t)) {
 			print_error("(%g, %g) should be on the triangle\n", on[i][0], on[i][1]);
@@ -220,7 +211,7 @@ static void test_solve_ray_triangle_edges_inclusive(void **state)
 		assert_near(t, 5.0, 0.0);
 	}
 	for (i = 0; i < sizeof(off) / sizeof(off[0]); i++) {
-		struct ray r = ray_make(off[i][0], off[i][1], 5, 0, 0, -1);
+		struct ray r = support_ray(off[i][0], off[i][1], 5, 0, 0, -1);
 		if (solve_ray_triangle(&r, v0, e1, e2, 0.0, INFINITY, &t)) {
 			print_error("(%g, %g) should be off the triangle\n", off[i][0], off[i][1]);
 			fail();
@@ -231,10 +222,10 @@ static void test_solve_ray_triangle_edges_inclusive(void **state)
 static void test_solve_ray_triangle_parallel_behind_interval(void **state)
 {
 	struct vec3 v0 = vec3_make(0, 0, 0), e1 = vec3_make(1, 0, 0), e2 = vec3_make(0, 1, 0);
-	struct ray parallel = ray_make(-1, 0.25, 0, 1, 0, 0);
-	struct ray away = ray_make(0.25, 0.25, 5, 0, 0, 1);
-	struct ray down = ray_make(0.25, 0.25, 5, 0, 0, -1);
-	struct ray fast = ray_make(0.25, 0.25, 5, 0, 0, -2);
+	struct ray parallel = support_ray(-1, 0.25, 0, 1, 0, 0);
+	struct ray away = support_ray(0.25, 0.25, 5, 0, 0, 1);
+	struct ray down = support_ray(0.25, 0.25, 5, 0, 0, -1);
+	struct ray fast = support_ray(0.25, 0.25, 5, 0, 0, -2);
 	double t = -1;
 
 	(void)state;
@@ -257,7 +248,7 @@ static void test_solve_ray_triangle_slanted(void **state)
 	/* The triangle (0,0,0) (2,0,2) (0,2,0) lies in the plane z = x.  A ray
 	 * from (0.5, 0.5, 10) straight down meets it at z = 0.5: t = 9.5. */
 	struct vec3 v0 = vec3_make(0, 0, 0), e1 = vec3_make(2, 0, 2), e2 = vec3_make(0, 2, 0);
-	struct ray r = ray_make(0.5, 0.5, 10, 0, 0, -1);
+	struct ray r = support_ray(0.5, 0.5, 10, 0, 0, -1);
 	double t = -1;
 
 	(void)state;

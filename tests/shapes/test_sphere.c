@@ -11,15 +11,6 @@
 
 static const struct material mat = { { 0.25, 0.5, 1.0 }, 0.4, 0.3, 0.2, 0.1, 7.0 };
 
-static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-	struct ray r;
-
-	r.origin = vec3_make(ox, oy, oz);
-	r.dir = vec3_make(dx, dy, dz);
-	return r;
-}
-
 /* A radius-2 sphere at the origin. */
 static int setup_sphere(void **state)
 {
@@ -33,30 +24,9 @@ static int teardown_sphere(void **state)
 	return 0;
 }
 
-/* The text a shape exports, NUL-terminated; the caller frees it. */
-static char *export_text(const struct shape *s, enum pov_finish finish)
-{
-	struct pov_options opt = { finish };
-	FILE *f = tmpfile();
-	char *text;
-	long n;
-
-	assert_non_null(f);
-	assert_int_equal(shape_export_pov(s, f, &opt), 0);
-	n = ftell(f);
-	assert_true(n > 0);
-	rewind(f);
-	text = malloc((size_t)n + 1);
-	assert_non_null(text);
-	assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-	text[n] = '\0';
-	fclose(f);
-	return text;
-}
-
 static void test_sphere_hit_shrinks_t_max(void **state)
 {
-	struct ray r = ray_make(0, 0, -10, 0, 0, 1);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
 	double t_max = 100.0;
 
 	/* |(0, 0, -10 + t)| = 2 at t = 8 and 12: the near one. */
@@ -69,8 +39,8 @@ static void test_sphere_hit_shrinks_t_max(void **state)
 
 static void test_sphere_miss_keeps_t_max(void **state)
 {
-	struct ray r = ray_make(0, 2.5, -10, 0, 0, 1);
-	struct ray away = ray_make(0, 0, -10, 0, 0, -1);
+	struct ray r = support_ray(0, 2.5, -10, 0, 0, 1);
+	struct ray away = support_ray(0, 0, -10, 0, 0, -1);
 	double t_max = 100.0;
 
 	assert_false(shape_intersect(*state, &r, 0.0, &t_max));
@@ -82,7 +52,7 @@ static void test_sphere_miss_keeps_t_max(void **state)
 
 static void test_sphere_tangent(void **state)
 {
-	struct ray graze = ray_make(0, 2, -10, 0, 0, 1);
+	struct ray graze = support_ray(0, 2, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	/* y = 2 touches the sphere at (0, 2, 0), t = 10. */
@@ -92,7 +62,7 @@ static void test_sphere_tangent(void **state)
 
 static void test_sphere_from_inside(void **state)
 {
-	struct ray r = ray_make(0, 0, 1, 0, 0, 1);
+	struct ray r = support_ray(0, 0, 1, 0, 0, 1);
 	double t_max = INFINITY;
 
 	/* From (0, 0, 1): roots -3 and 1; the exit at z = 2. */
@@ -102,7 +72,7 @@ static void test_sphere_from_inside(void **state)
 
 static void test_sphere_t_min_respected(void **state)
 {
-	struct ray r = ray_make(0, 0, -10, 0, 0, 1);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	assert_true(shape_intersect(*state, &r, 9.0, &t_max));
@@ -114,7 +84,7 @@ static void test_sphere_t_min_respected(void **state)
 
 static void test_sphere_non_unit_direction(void **state)
 {
-	struct ray r = ray_make(0, 0, -10, 0, 0, 0.5);
+	struct ray r = support_ray(0, 0, -10, 0, 0, 0.5);
 	double t_max = INFINITY;
 
 	/* |d| = 0.5: t = 8 / 0.5 = 16. */
@@ -146,7 +116,7 @@ static void test_sphere_unit_normals(void **state)
 static void test_sphere_hit_off_centre(void **state)
 {
 	struct shape *s = sphere_create(vec3_make(1, 2, 3), 2.5, &mat);
-	struct ray r = ray_make(1, 2 + 1.5, -7, 0, 0, 1);
+	struct ray r = support_ray(1, 2 + 1.5, -7, 0, 0, 1);
 	double t_max = INFINITY;
 	struct vec3 n;
 
@@ -181,7 +151,7 @@ static void test_sphere_parse(void **state)
 	struct scene *sc = support_parse("1 1\n1\nsphere 1 -2 3.5 4  0.25 0.5 1  0.4 0.3 0.2 0.1 7\n0\n");
 	struct shape *s;
 	struct aabb box;
-	struct ray r = ray_make(1, -2, -10, 0, 0, 1);
+	struct ray r = support_ray(1, -2, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	(void)state;
@@ -209,7 +179,7 @@ static void test_sphere_export_pov(void **state)
 {
 	struct shape *s = sphere_create(vec3_make(1, -2, 0.1), 2.5, &mat);
 	double x, y, z, r, cr, cg, cb, ka, kd, ks, sh, kr;
-	char *text = export_text(s, RT_POV_FINISH_PLAIN), *tex;
+	char *text = support_export_pov(s, RT_POV_FINISH_PLAIN), *tex;
 
 	(void)state;
 	assert_int_equal(sscanf(text, "sphere { <%lf,%lf,%lf>, %lf", &x, &y, &z, &r), 4);
@@ -236,7 +206,7 @@ static void test_sphere_export_pov(void **state)
 	free(text);
 
 	/* Exact mode: a white pigment and the ambient carries KA * colour. */
-	text = export_text(s, RT_POV_FINISH_EXACT);
+	text = support_export_pov(s, RT_POV_FINISH_EXACT);
 	tex = strstr(text, "texture {");
 	assert_non_null(tex);
 	assert_int_equal(sscanf(tex, "texture { pigment { rgb 1 } finish { ambient rgb <%lf,%lf,%lf>",

@@ -11,15 +11,6 @@
 
 static const struct material mat = { { 1.0, 0.0, 0.0 }, 0.4, 0.2, 0.1, 0.3, 5.0 };
 
-static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
-{
-	struct ray r;
-
-	r.origin = vec3_make(ox, oy, oz);
-	r.dir = vec3_make(dx, dy, dz);
-	return r;
-}
-
 /* (0,0,2) (4,0,2) (0,4,2): the right triangle with legs 4 in the plane
  * z = 2; (b - a) x (c - a) = (4,0,0) x (0,4,0) = (0,0,16). */
 static int setup_triangle(void **state)
@@ -34,29 +25,10 @@ static int teardown_triangle(void **state)
 	return 0;
 }
 
-static char *export_text(const struct shape *s)
-{
-	struct pov_options opt = { RT_POV_FINISH_PLAIN };
-	FILE *f = tmpfile();
-	char *text;
-	long n;
-
-	assert_non_null(f);
-	assert_int_equal(shape_export_pov(s, f, &opt), 0);
-	n = ftell(f);
-	rewind(f);
-	text = malloc((size_t)n + 1);
-	assert_non_null(text);
-	assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
-	text[n] = '\0';
-	fclose(f);
-	return text;
-}
-
 static void test_triangle_hit_from_both_sides(void **state)
 {
-	struct ray down = ray_make(1, 1, 10, 0, 0, -1);
-	struct ray up = ray_make(1, 1, -10, 0, 0, 1);
+	struct ray down = support_ray(1, 1, 10, 0, 0, -1);
+	struct ray up = support_ray(1, 1, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
 	/* From z = 10 down to z = 2: t = 8; from z = -10 up: t = 12. */
@@ -81,7 +53,7 @@ static void test_triangle_edges_inclusive(void **state)
 	/* Straight down: every coordinate is a small binary fraction, so
 	 * u = x / 4 and v = y / 4 are exact and the edges are hit exactly. */
 	for (i = 0; i < sizeof(on) / sizeof(on[0]); i++) {
-		struct ray r = ray_make(on[i][0], on[i][1], 10, 0, 0, -1);
+		struct ray r = support_ray(on[i][0], on[i][1], 10, 0, 0, -1);
 		t_max = INFINITY;
 		if (!shape_intersect(*state, &r, 0.0, &t_max)) {
 			print_error("(%g, %g) is on the triangle\n", on[i][0], on[i][1]);
@@ -90,7 +62,7 @@ static void test_triangle_edges_inclusive(void **state)
 		assert_near(t_max, 8.0, 0.0);
 	}
 	for (i = 0; i < sizeof(off) / sizeof(off[0]); i++) {
-		struct ray r = ray_make(off[i][0], off[i][1], 10, 0, 0, -1);
+		struct ray r = support_ray(off[i][0], off[i][1], 10, 0, 0, -1);
 		t_max = INFINITY;
 		if (shape_intersect(*state, &r, 0.0, &t_max)) {
 			print_error("(%g, %g) is off the triangle\n", off[i][0], off[i][1]);
@@ -102,9 +74,9 @@ static void test_triangle_edges_inclusive(void **state)
 
 static void test_triangle_miss_behind_parallel(void **state)
 {
-	struct ray away = ray_make(1, 1, 10, 0, 0, 1);
-	struct ray in_plane = ray_make(-5, 1, 2, 1, 0, 0);
-	struct ray above = ray_make(-5, 1, 3, 1, 0, 0);
+	struct ray away = support_ray(1, 1, 10, 0, 0, 1);
+	struct ray in_plane = support_ray(-5, 1, 2, 1, 0, 0);
+	struct ray above = support_ray(-5, 1, 3, 1, 0, 0);
 	double t_max = 50.0;
 
 	assert_false(shape_intersect(*state, &away, 0.0, &t_max));
@@ -116,7 +88,7 @@ static void test_triangle_miss_behind_parallel(void **state)
 
 static void test_triangle_t_interval(void **state)
 {
-	struct ray r = ray_make(1, 1, 10, 0, 0, -1);
+	struct ray r = support_ray(1, 1, 10, 0, 0, -1);
 	double t_max = 8.0;
 
 	/* The interval is open: an existing hit at 8 is not beaten. */
@@ -131,7 +103,7 @@ static void test_triangle_t_interval(void **state)
 
 static void test_triangle_starting_on_surface(void **state)
 {
-	struct ray leave = ray_make(1, 1, 2, 0, 0.6, 0.8);
+	struct ray leave = support_ray(1, 1, 2, 0, 0.6, 0.8);
 	double t_max = INFINITY;
 
 	/* A ray leaving the surface does not hit it again past t_min. */
@@ -140,8 +112,8 @@ static void test_triangle_starting_on_surface(void **state)
 
 static void test_triangle_non_unit_direction(void **state)
 {
-	struct ray r = ray_make(1, 1, 10, 0, 0, -4);
-	struct ray slant = ray_make(-3, 1, 6, 1, 0, -1);
+	struct ray r = support_ray(1, 1, 10, 0, 0, -4);
+	struct ray slant = support_ray(-3, 1, 6, 1, 0, -1);
 	double t_max = INFINITY;
 
 	/* |d| = 4: t = 8 / 4 = 2. */
@@ -188,7 +160,7 @@ static void test_triangle_degenerate(void **state)
 					     vec3_make(2, 2, 2), &mat);
 	struct shape *point = triangle_create(vec3_make(1, 1, 1), vec3_make(1, 1, 1),
 					      vec3_make(0, 0, 1), &mat);
-	struct ray r = ray_make(1, 1, 10, 0, 0, -1);
+	struct ray r = support_ray(1, 1, 10, 0, 0, -1);
 	double t_max = INFINITY;
 
 	assert_null(shape_degenerate(*state));
@@ -224,7 +196,7 @@ static void test_triangle_export_pov(void **state)
 	struct shape *line = triangle_create(vec3_make(0, 0, 0), vec3_make(1, 1, 1),
 					     vec3_make(2, 2, 2), &mat);
 	double v[9];
-	char *text = export_text(s);
+	char *text = support_export_pov(s, RT_POV_FINISH_PLAIN);
 
 	(void)state;
 	assert_int_equal(sscanf(text, "triangle { <%lf,%lf,%lf>, <%lf,%lf,%lf>, <%lf,%lf,%lf>",
@@ -242,7 +214,7 @@ static void test_triangle_export_pov(void **state)
 	assert_non_null(strstr(text, "texture { pigment { rgb <1,0,0> }"));
 	free(text);
 	/* A degenerate triangle is a comment, not an object. */
-	text = export_text(line);
+	text = support_export_pov(line, RT_POV_FINISH_PLAIN);
 	assert_memory_equal(text, "//", 2);
 	assert_null(strstr(text, "triangle {"));
 	free(text);
