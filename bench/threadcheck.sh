@@ -1,6 +1,9 @@
 #!/bin/sh
 # The image must not depend on the number of threads: renders scenes with
-# 1, 2, 3 and 7 threads and compares the files byte for byte.
+# 1, 2, 3 and 7 threads and compares the files byte for byte.  The 12,000
+# object scene is big enough for the hierarchy's build to split its work
+# between threads too; helgrind (when valgrind is installed) then looks
+# for data races in the build, the parse's hashing thread and the render.
 set -u
 BUILD=${BUILD:-build}
 W=$BUILD/whitted
@@ -8,7 +11,9 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 pass=0 fail=0
 "$BUILD/gen_scene" 300 >"$T/gen.txt"
-for case in "scenes/scene.txt -s 97" "$T/gen.txt -s 61" "scenes/scene.txt -s 40 --clamp final"; do
+"$BUILD/gen_scene" 12000 >"$T/gen12k.txt"
+for case in "scenes/scene.txt -s 97" "$T/gen.txt -s 61" "scenes/scene.txt -s 40 --clamp final" \
+	"$T/gen12k.txt -s 33"; do
 	set -- $case
 	for j in 1 2 3 7; do
 		if ! "$W" -q -j $j -o "$T/j$j.ppm" "$@"; then
@@ -26,5 +31,18 @@ for case in "scenes/scene.txt -s 97" "$T/gen.txt -s 61" "scenes/scene.txt -s 40 
 		fi
 	done
 done
+# The hash thread starts at 1 MiB of scene text: the 12k file is bigger.
+if command -v valgrind >/dev/null 2>&1; then
+	if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j 3 -s 16 -o "$T/hg.ppm" \
+		"$T/gen12k.txt" 2>"$T/hg.err"; then
+		pass=$((pass + 1))
+	else
+		echo "threadcheck: helgrind reports:"
+		cat "$T/hg.err"
+		fail=$((fail + 1))
+	fi
+else
+	echo "threadcheck: helgrind NOT RUN (valgrind is not installed)"
+fi
 echo "threadcheck: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -14,7 +14,9 @@
 struct scene;
 struct accel;
 
-int accel_build(const struct scene *s, struct accel **out, struct diag *d);
+/* Builds with up to `threads` threads (at least 1); the tree is the same
+ * for any number. */
+int accel_build(const struct scene *s, int threads, struct accel **out, struct diag *d);
 void accel_destroy(struct accel *a);
 
 /* The nearest shape hit with t in (t_min, *t_max), shrinking *t_max; NULL

@@ -66,8 +66,9 @@ int scene_load(const char *path, scene_note_fn *note, void *note_ctx,
 /* The assignment's built-in test scene (a red sphere and a white light). */
 int scene_test_scene(struct scene **out, struct diag *d);
 
-/* Builds the acceleration structure; call after the last shape is added and
- * before rendering. */
-int scene_prepare(struct scene *s, struct diag *d);
+/* Builds the acceleration structure with up to `threads` threads (at least
+ * 1; the structure is the same for any number); call after the last shape
+ * is added and before rendering. */
+int scene_prepare(struct scene *s, int threads, struct diag *d);
 
 #endif

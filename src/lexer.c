@@ -17,26 +17,41 @@ void lexer_init(struct lexer *lx, const char *text, size_t len)
 	lx->line_start = text;
 }
 
-static bool lexer_is_space(char c)
+/* What each byte can be, for the loop that reads every byte of a
+ * million-object file: a table look-up instead of up to eight compares. */
+enum {
+	LX_SPACE = 1,		/* ' ' \t \n \r \v \f */
+	LX_NEWLINE = 2,
+	LX_COMMENT = 4,		/* '#', or '/' which starts one when doubled */
+};
+
+static const unsigned char lexer_class[256] = {
+	['\t'] = LX_SPACE, ['\n'] = LX_SPACE | LX_NEWLINE, ['\v'] = LX_SPACE,
+	['\f'] = LX_SPACE, ['\r'] = LX_SPACE, [' '] = LX_SPACE,
+	['#'] = LX_COMMENT, ['/'] = LX_COMMENT,
+};
+
+static inline unsigned lexer_class_of(char c)
 {
-	return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+	return lexer_class[(unsigned char)c];
 }
 
-static bool lexer_at_comment(const char *p, const char *end)
+static inline bool lexer_at_comment(const char *p, const char *end)
 {
 	return *p == '#' || (*p == '/' && p + 1 < end && p[1] == '/');
 }
 
 /* Columns are counted from the line's start when a token is found rather
- * than byte by byte: this loop reads every byte of a million-object file. */
+ * than byte by byte. */
 struct token lexer_next(struct lexer *lx)
 {
 	const char *p = lx->pos, *end = lx->end;
 	struct token t;
 
 	for (;;) {
-		while (p < end && lexer_is_space(*p)) {
-			if (*p == '\n') {
+		unsigned cls;
+		while (p < end && ((cls = lexer_class_of(*p)) & LX_SPACE)) {
+			if (cls & LX_NEWLINE) {
 				lx->line++;
 				lx->line_start = p + 1;
 			}
@@ -50,7 +65,8 @@ struct token lexer_next(struct lexer *lx)
 		t.text = p < end ? p : NULL;
 		t.line = lx->line;
 		t.col = (int)(p - lx->line_start) + 1;
-		while (p < end && !lexer_is_space(*p) && !lexer_at_comment(p, end))
+		while (p < end && (!((cls = lexer_class_of(*p)) & (LX_SPACE | LX_COMMENT)) ||
+				   (cls == LX_COMMENT && !lexer_at_comment(p, end))))
 			p++;
 		t.len = t.text ? (size_t)(p - t.text) : 0;
 		if (t.len == 1 && t.text[0] == '-') {

@@ -588,7 +588,7 @@ static int run(struct options *o)
 	if (o->path_file && (rc = frames_path_load(o->path_file, &o->scene.camera, &path, &d)) < 0)
 		goto out;
 	t1 = now_seconds();
-	if ((rc = scene_prepare(s, &d)) < 0)
+	if ((rc = scene_prepare(s, o->threads, &d)) < 0)
 		goto out;
 	t2 = now_seconds();
 	first = o->frame ? o->frame : o->frames ? 1 : 0;

@@ -361,6 +361,7 @@ int scene_parse(const char *name, const char *text, size_t len,
 {
 	struct parser p;
 	struct scene *s;
+	struct hash_job hash;
 	int rc;
 
 	*out = NULL;
@@ -378,8 +379,9 @@ int scene_parse(const char *name, const char *text, size_t len,
 	s = scene_create(name);
 	if (!s)
 		return diag_set(d, RT_E_NOMEM, name, 0, 0, "out of memory");
-	s->source_hash = hash_bytes(RT_HASH_INIT, text, len);
+	hash_start(&hash, text, len);
 	rc = parse_scene(&p, s);
+	s->source_hash = hash_finish(&hash);
 	if (rc < 0) {
 		scene_destroy(s);
 		return rc;

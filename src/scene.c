@@ -129,9 +129,9 @@ int scene_test_scene(struct scene **out, struct diag *d)
 	return scene_parse("<test scene>", text, sizeof(text) - 1, NULL, NULL, out, d);
 }
 
-int scene_prepare(struct scene *s, struct diag *d)
+int scene_prepare(struct scene *s, int threads, struct diag *d)
 {
 	accel_destroy(s->accel);
 	s->accel = NULL;
-	return accel_build(s, &s->accel, d);
+	return accel_build(s, threads, &s->accel, d);
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "accel.h"
+#include "../src/accel_tree.h"
 #include "shapes/solve.h"
 #include "support.h"
 
@@ -191,7 +192,7 @@ static void test_accel_random_scenes_match_brute_force(void **state)
 			add_random_shape(s, random_point(half), uniform(0.5, 10));
 		if (scene_no % 2 == 0)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
-		assert_int_equal(scene_prepare(s, &d), 0);
+		assert_int_equal(scene_prepare(s, 1, &d), 0);
 		hits = compare_rays(s, 3000, half);
 		/* The rays aimed at shapes mostly hit. */
 		assert_true(hits > 300);
@@ -218,7 +219,7 @@ static void test_accel_all_shapes_at_one_centre(void **state)
 		add(s, triangle_create(vec3_add(vec3_make(3, 3, 3), a), vec3_sub(vec3_make(3, 3, 3), a),
 				       vec3_add(vec3_make(3, 3, 3), vec3_cross(a, vec3_make(0, 0, 1))), &mat));
 	}
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_true(accel_node_count(s->accel) > 1);
 	assert_true(compare_rays(s, 3000, 10) > 300);
 	scene_destroy(s);
@@ -233,7 +234,7 @@ static void test_accel_one_shape(void **state)
 
 	(void)state;
 	add(s, sphere_create(vec3_make(0, 0, 0), 2, &mat));
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_int_equal(accel_node_count(s->accel), 1);
 	r.origin = vec3_make(0, 0, -10);
 	r.dir = vec3_make(0, 0, 1);
@@ -258,7 +259,7 @@ static void test_accel_no_shapes(void **state)
 	double t = 5.0;
 
 	(void)state;
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_non_null(s->accel);
 	assert_int_equal(accel_node_count(s->accel), 0);
 	r.origin = vec3_make(0, 0, 0);
@@ -271,7 +272,7 @@ static void test_accel_no_shapes(void **state)
 		static const double plane[10] = { 0, 0, 0, 0, 0, 0, 1, 0, 0, -3 };
 		add(s, quadric_create(plane, vec3_make(0, 0, 0), vec3_make(0, 0, 0), &mat));
 	}
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_int_equal(accel_node_count(s->accel), 0);
 	t = INFINITY;
 	assert_ptr_equal(accel_intersect(s->accel, &r, 0, &t), s->shapes[0]);
@@ -292,12 +293,12 @@ static void test_accel_many_shapes(void **state)
 	for (i = 0; i < 10000; i++)
 		add_random_shape(s, random_point(200), uniform(0.2, 3));
 	assert_int_equal(scene_add_floor(s, 300, 10, &d), 0);
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_true(accel_node_count(s->accel) > 1000);
 	assert_true(accel_bytes(s->accel) > accel_node_count(s->accel));
 	assert_true(compare_rays(s, 3000, 200) > 300);
 	/* Preparing again rebuilds without leaking the old hierarchy. */
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	scene_destroy(s);
 }
 
@@ -311,9 +312,77 @@ static void test_accel_many_at_one_point(void **state)
 	/* 10000 identical tiny spheres: the median split must still end. */
 	for (i = 0; i < 10000; i++)
 		add(s, sphere_create(vec3_make(1, 2, 3), 0.5, &mat));
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	rng_seed(3);
 	compare_rays(s, 500, 4);
+	scene_destroy(s);
+}
+
+/* The halves of big nodes are built by different threads, each into the
+ * node indices its refs reserve: the tree must come out the same, node
+ * for node and in the same order, whatever the number of threads. */
+static void assert_same_tree_for_threads(struct scene *s)
+{
+	struct bvh_node *nodes;
+	const struct shape **bounded;
+	size_t n_nodes, n_bounded;
+	struct diag d;
+	static const int threads[] = { 2, 3, 7, 64 };
+	size_t k;
+
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	n_nodes = s->accel->n_nodes;
+	n_bounded = s->accel->n_bounded;
+	nodes = test_malloc(n_nodes * sizeof(*nodes));
+	bounded = test_malloc(n_bounded * sizeof(*bounded));
+	memcpy(nodes, s->accel->nodes, n_nodes * sizeof(*nodes));
+	memcpy(bounded, s->accel->bounded, n_bounded * sizeof(*bounded));
+	for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
+		assert_int_equal(scene_prepare(s, threads[k], &d), 0);
+		assert_int_equal(s->accel->n_nodes, n_nodes);
+		assert_int_equal(s->accel->n_bounded, n_bounded);
+		assert_memory_equal(s->accel->nodes, nodes, n_nodes * sizeof(*nodes));
+		assert_memory_equal(s->accel->bounded, bounded, n_bounded * sizeof(*bounded));
+	}
+	test_free(nodes);
+	test_free(bounded);
+}
+
+static void test_accel_threads_build_the_same_tree(void **state)
+{
+	struct scene *s = scene_create("threads");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(77);
+	/* Big enough that the top nodes' halves (4096 refs and more) go to
+	 * other threads; the floor is split off first, as in a real scene. */
+	for (i = 0; i < 40000; i++)
+		add_random_shape(s, random_point(300), uniform(0.2, 3));
+	assert_int_equal(scene_add_floor(s, 1000, 20, &d), 0);
+	assert_same_tree_for_threads(s);
+	/* Every index below n_nodes is a node of the tree: the unused ones
+	 * were squeezed out, and the root's children follow it. */
+	assert_true(s->accel->n_nodes <= s->accel->n_bounded - 1);
+	assert_int_equal(s->accel->nodes[0].slot[0] & 7, ACCEL_SLOT_NODE);
+	assert_true(compare_rays(s, 3000, 300) > 300);
+	scene_destroy(s);
+}
+
+static void test_accel_threads_median_splits(void **state)
+{
+	struct scene *s = scene_create("stack");
+	int i;
+
+	(void)state;
+	/* 20000 shapes at one point: the heuristic finds no split and the
+	 * median halves (10000, then 5000) go to other threads. */
+	for (i = 0; i < 20000; i++)
+		add(s, sphere_create(vec3_make(-1, 2, 5), 0.5, &mat));
+	assert_same_tree_for_threads(s);
+	rng_seed(4);
+	compare_rays(s, 300, 6);
 	scene_destroy(s);
 }
 
@@ -332,7 +401,7 @@ static void test_accel_negative_zero_direction(void **state)
 	add(s, triangle_create(vec3_make(0, -10, 0), vec3_make(0, 10, 0), vec3_make(0, 0, 20), &mat));
 	for (i = 0; i < 10; i++)
 		add(s, sphere_create(vec3_make(50 + i * 10, 0, 5), 1, &mat));
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	for (k = 0; k < 2; k++) {
 		struct ray r;
 		double ta = INFINITY, tb = INFINITY;
@@ -365,6 +434,8 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_accel_many_shapes),
 		cmocka_unit_test(test_accel_many_at_one_point),
 		cmocka_unit_test(test_accel_negative_zero_direction),
+		cmocka_unit_test(test_accel_threads_build_the_same_tree),
+		cmocka_unit_test(test_accel_threads_median_splits),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }

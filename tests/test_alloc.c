@@ -65,7 +65,7 @@ static int load_all(const char *text, size_t len, struct scene **out, struct dia
 		return rc;
 	}
 	if ((rc = scene_add_floor(*out, RT_FLOOR_WIDTH, RT_FLOOR_TILE, d)) < 0 ||
-	    (rc = scene_prepare(*out, d)) < 0) {
+	    (rc = scene_prepare(*out, 1, d)) < 0) {
 		assert_null((*out)->accel);
 		scene_destroy(*out);
 		*out = NULL;
@@ -138,11 +138,11 @@ static void test_alloc_sweep_prepare_again(void **state)
 	unsigned long n;
 
 	(void)state;
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	for (n = 1; n < SWEEP_MAX; n++) {
 		int rc;
 		rt_alloc_fail_from(n);
-		rc = scene_prepare(s, &d);
+		rc = scene_prepare(s, 1, &d);
 		rt_alloc_fail_from(0);
 		if (rc == 0)
 			break;
@@ -280,7 +280,7 @@ static void test_alloc_render_allocates_nothing(void **state)
 
 	(void)state;
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	camera_params_default(&cp);
 	assert_int_equal(camera_init(&cam, &cp, 24, &d), 0);
 	assert_int_equal(image_alloc(&img, 24, 24, &d), 0);

@@ -659,7 +659,7 @@ static void render_small(struct scene *s)
 	size_t i, lit = 0;
 
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	camera_params_default(&cp);
 	assert_int_equal(camera_init(&cam, &cp, 8, &d), 0);
 	assert_int_equal(image_alloc(&img, 8, 8, &d), 0);

@@ -26,7 +26,7 @@ static struct scene *prepared(const char *text, bool with_floor)
 
 	if (with_floor)
 		assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	return s;
 }
 
@@ -612,7 +612,7 @@ static void test_render_errors_and_cancel(void **state)
 	job.x1 = job.y1 = 8;
 	/* Not prepared. */
 	assert_int_equal(render_image(&job, &img, NULL, &d), -RT_E_INVALID);
-	assert_int_equal(scene_prepare(s, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	/* Regions outside the image, empty, or not the image's size. */
 	job.x1 = 9;
 	assert_int_equal(render_image(&job, &img, NULL, &d), -RT_E_INVALID);

@@ -338,7 +338,7 @@ static int load(void)
 		print_diag(&d, "error");
 		return rc == -RT_E_INVALID ? EXIT_USAGE : EXIT_SCENE;
 	}
-	if (scene_prepare(v.scene, &d) < 0 || fly_camera_init(&v.cam, &v.opts.camera, &d) < 0) {
+	if (scene_prepare(v.scene, v.threads, &d) < 0 || fly_camera_init(&v.cam, &v.opts.camera, &d) < 0) {
 		print_diag(&d, "error");
 		return EXIT_SCENE;
 	}

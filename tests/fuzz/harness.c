@@ -43,7 +43,7 @@ static void fuzz_render(struct scene *s)
 	if (s->recursion > FUZZ_RECURSION)
 		s->recursion = FUZZ_RECURSION;
 	if (scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d) < 0 ||
-	    scene_prepare(s, &d) < 0)
+	    scene_prepare(s, 1, &d) < 0)
 		return;
 	camera_params_default(&cp);
 	if (camera_init(&cam, &cp, FUZZ_IMAGE, &d) < 0 ||

@@ -1,0 +1,56 @@
+/* The scene and options hash: FNV-1a 64 against published test vectors,
+ * hashing in pieces, and the threaded hash_start/hash_finish against the
+ * plain one for inputs below and above the size that takes a thread. */
+#include <string.h>
+
+#include "hash.h"
+#include "support.h"
+
+static void test_hash_fnv1a_vectors(void **state)
+{
+	(void)state;
+	/* From the FNV reference test suite (isthe.com/chongo/tech/comp/fnv). */
+	assert_true(hash_bytes(RT_HASH_INIT, "", 0) == UINT64_C(0xcbf29ce484222325));
+	assert_true(hash_bytes(RT_HASH_INIT, "a", 1) == UINT64_C(0xaf63dc4c8601ec8c));
+	assert_true(hash_bytes(RT_HASH_INIT, "foobar", 6) == UINT64_C(0x85944171f73967e8));
+}
+
+static void test_hash_in_pieces(void **state)
+{
+	const char text[] = "4\n512\n\n1\nsphere 0 0 0 1\n";
+	size_t cut;
+
+	(void)state;
+	for (cut = 0; cut <= sizeof(text) - 1; cut++)
+		assert_true(hash_bytes(hash_bytes(RT_HASH_INIT, text, cut), text + cut,
+				       sizeof(text) - 1 - cut) ==
+			    hash_bytes(RT_HASH_INIT, text, sizeof(text) - 1));
+}
+
+static void test_hash_threaded_equals_plain(void **state)
+{
+	static const size_t sizes[] = { 0, 1, 1000, (1u << 20) - 1, 1u << 20, 3u << 20 };
+	size_t k, i, max = 3u << 20;
+	unsigned char *buf = test_malloc(max);
+
+	(void)state;
+	for (i = 0; i < max; i++)
+		buf[i] = (unsigned char)(i * 2654435761u >> 13);
+	for (k = 0; k < sizeof(sizes) / sizeof(sizes[0]); k++) {
+		struct hash_job job;
+		hash_start(&job, buf, sizes[k]);
+		assert_true(hash_finish(&job) == hash_bytes(RT_HASH_INIT, buf, sizes[k]));
+	}
+	test_free(buf);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_hash_fnv1a_vectors),
+		cmocka_unit_test(test_hash_in_pieces),
+		cmocka_unit_test(test_hash_threaded_equals_plain),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
