@@ -52,6 +52,7 @@ struct cli_scene {
 	bool test_scene;
 	bool quiet;
 	enum clamp_mode clamp;
+	struct scene_read_options read;	/* threads: all online cores */
 };
 
 void cli_scene_init(struct cli_scene *o);

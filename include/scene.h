@@ -42,7 +42,7 @@ struct scene {
 	struct accel *accel;		/* built by scene_prepare */
 	/* hash_bytes of the scene text as read, so that region renders can
 	 * tell whether they come from the same file. */
-	uint64_t source_hash;
+	uint64_t source_hash;		/* 0 unless asked for */
 };
 
 /* Receives notes (trailing text, degenerate shapes) during loading. */
@@ -56,13 +56,23 @@ int scene_add_light(struct scene *s, struct vec3 pos, struct color color, struct
 /* Adds the checkerboard floor (width and tile > 0). */
 int scene_add_floor(struct scene *s, double width, double tile, struct diag *d);
 
+/* How to read scene text; NULL means one thread and no hash. */
+struct scene_read_options {
+	/* At least 1: a big file's objects are read by up to this many
+	 * threads.  The scene, its notes and its errors are the same for any
+	 * number. */
+	int threads;
+	/* Fill source_hash (a multiplication a byte, so only when wanted). */
+	bool hash;
+};
+
 /* Parses scene text; name is used in diagnostics.  Adds no floor. */
 int scene_parse(const char *name, const char *text, size_t len,
-		scene_note_fn *note, void *note_ctx,
+		const struct scene_read_options *opt, scene_note_fn *note, void *note_ctx,
 		struct scene **out, struct diag *d);
 /* Reads and parses a file. */
-int scene_load(const char *path, scene_note_fn *note, void *note_ctx,
-	       struct scene **out, struct diag *d);
+int scene_load(const char *path, const struct scene_read_options *opt,
+	       scene_note_fn *note, void *note_ctx, struct scene **out, struct diag *d);
 /* The assignment's built-in test scene (a red sphere and a white light). */
 int scene_test_scene(struct scene **out, struct diag *d);
 

@@ -1,17 +1,23 @@
 /* The library's allocator: the C library's, plus a switch that makes
  * allocations fail from a chosen one on, for the allocation-failure tests. */
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "alloc.h"
 
-/* Only the tests set these, from one thread, before any render starts. */
+/* Only the tests set these, from one thread, before any render starts.
+ * Until they do, allocations are not even counted: the parse and the
+ * build allocate from several threads. */
+static bool alloc_armed;
 static unsigned long alloc_count;
 static unsigned long alloc_fail_at;
 
 static int alloc_should_fail(void)
 {
+	if (!alloc_armed)
+		return 0;
 	alloc_count++;
 	return alloc_fail_at != 0 && alloc_count >= alloc_fail_at;
 }
@@ -20,6 +26,7 @@ unsigned long rt_alloc_fail_from(unsigned long n)
 {
 	unsigned long made = alloc_count;
 
+	alloc_armed = true;
 	alloc_count = 0;
 	alloc_fail_at = n;
 	return made;

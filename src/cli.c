@@ -29,6 +29,7 @@ void cli_scene_init(struct cli_scene *o)
 	o->floor_width = RT_FLOOR_WIDTH;
 	o->floor_tile = RT_FLOOR_TILE;
 	o->clamp = RT_CLAMP_LEVEL;
+	o->read.threads = cli_default_threads();
 }
 
 int cli_parse_double(const char *opt, const char *arg, double *out, struct diag *d)
@@ -169,7 +170,7 @@ int cli_scene_load(const struct cli_scene *o, const char *path,
 	int rc;
 
 	*out = NULL;
-	rc = path ? scene_load(path, note, note_ctx, &s, d) : scene_test_scene(&s, d);
+	rc = path ? scene_load(path, &o->read, note, note_ctx, &s, d) : scene_test_scene(&s, d);
 	if (rc < 0)
 		return rc;
 	if (o->size)

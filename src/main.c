@@ -317,7 +317,7 @@ static int parse_args(int argc, char **argv, struct options *o)
 		case 'j':
 			if (cli_parse_long("--threads", optarg, 1, 64, &n, &d) < 0)
 				return usage_error("%s", d.msg);
-			o->threads = (int)n;
+			o->threads = o->scene.read.threads = (int)n;
 			break;
 		case OPT_STATS:
 			o->stats = true;
@@ -574,6 +574,8 @@ static int run(struct options *o)
 	diag_clear(&d);
 	memset(&times, 0, sizeof(times));
 	t0 = now_seconds();
+	/* Only tiles carry the scene's hash, to tell their scene apart. */
+	o->scene.read.hash = o->region || o->grid_cols;
 	rc = cli_scene_load(&o->scene, o->scene_path, print_note, o, &s, &cam, &d);
 	if (rc < 0) {
 		print_diag(&d, "error");

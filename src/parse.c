@@ -12,22 +12,10 @@
 #include "hash.h"
 #include "lexer.h"
 #include "parse.h"
+#include "parse_private.h"
 #include "scene.h"
 #include "shape.h"
 
-#define PARSE_MAX_NOTES 20
-
-struct parser {
-	struct lexer lx;
-	struct token last;		/* the token most recently read */
-	const char *name;
-	const char *text;
-	size_t len;
-	struct diag *d;
-	scene_note_fn *note;
-	void *note_ctx;
-	int notes_sent, notes_dropped;	/* the notes about shapes, capped */
-};
 
 /* Quotes a token for a message: at most 40 bytes, unprintable bytes escaped. */
 static void token_describe(const struct token *t, char *buf, size_t size)
@@ -207,15 +195,14 @@ int parser_material(struct parser *p, struct material *m)
 	return 0;
 }
 
-static int parse_object(struct parser *p, struct scene *s, long index, long count)
+int parse_shape(struct parser *p, struct shape **out, int *line, long index, long count)
 {
 	const struct shape_ops *ops;
-	struct shape *sh = NULL;
 	struct token kw = parser_next(p);
-	const char *why;
 	char found[64];
-	int rc;
 
+	*out = NULL;
+	*line = kw.line;
 	if (!kw.text)
 		return parser_fail(p, RT_E_SYNTAX,
 				   "expected an object keyword (%s) for object %ld of %ld, found end of file",
@@ -231,16 +218,29 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 		return parser_fail(p, RT_E_SYNTAX, "unknown object %s; known objects: %s",
 				   found, shape_keywords());
 	}
-	rc = ops->parse(p, &sh);
-	if (rc < 0)
-		return rc;
-	why = shape_degenerate(sh);
+	return ops->parse(p, out);
+}
+
+void parser_note_degenerate(struct parser *p, const struct shape *sh, int line, long index)
+{
+	const char *why = shape_degenerate(sh);
+
 	if (why && p->notes_sent < PARSE_MAX_NOTES) {
 		p->notes_sent++;
-		parser_note(p, kw.line, "%s (object %ld) %s", ops->keyword, index, why);
+		parser_note(p, line, "%s (object %ld) %s", sh->ops->keyword, index, why);
 	} else if (why) {
 		p->notes_dropped++;
 	}
+}
+
+static int parse_object(struct parser *p, struct scene *s, long index, long count)
+{
+	struct shape *sh;
+	int line, rc = parse_shape(p, &sh, &line, index, count);
+
+	if (rc < 0)
+		return rc;
+	parser_note_degenerate(p, sh, line, index);
 	return scene_add_shape(s, sh, p->d);
 }
 
@@ -313,10 +313,11 @@ static void parse_trailing(struct parser *p)
 		    last_line - t.line + 1, last_line > t.line ? "s" : "");
 }
 
-static int parse_scene(struct parser *p, struct scene *s)
+static int parse_scene(struct parser *p, struct scene *s, int threads)
 {
 	struct lexer ahead = p->lx;
 	struct token first = lexer_next(&ahead);
+	struct parse_parts *parts;
 	long recursion, size, objects, lights, i;
 	int rc;
 
@@ -335,9 +336,23 @@ static int parse_scene(struct parser *p, struct scene *s)
 	s->image_size = (int)size;
 	if ((rc = parser_int(p, "object count", 0, RT_MAX_OBJECTS, &objects)) < 0)
 		return rc;
-	for (i = 1; i <= objects; i++)
-		if ((rc = parse_object(p, s, i, objects)) < 0)
+	parts = objects > 0 ? parse_parts_start(p, threads) : NULL;
+	for (i = 1; i <= objects; i++) {
+		long taken = parts ? parse_parts_take(parts, p, s, i, objects - i + 1) : 0;
+		if (taken < 0) {
+			parse_parts_finish(parts);
+			return (int)taken;
+		}
+		if (taken > 0) {
+			i += taken - 1;
+			continue;
+		}
+		if ((rc = parse_object(p, s, i, objects)) < 0) {
+			parse_parts_finish(parts);
 			return rc;
+		}
+	}
+	parse_parts_finish(parts);
 	if (p->notes_dropped > 0)
 		parser_note(p, 0, "%d more notes not shown", p->notes_dropped);
 	rc = parser_int(p, "light count", 0, RT_MAX_LIGHTS, &lights);
@@ -356,7 +371,7 @@ static int parse_scene(struct parser *p, struct scene *s)
 }
 
 int scene_parse(const char *name, const char *text, size_t len,
-		scene_note_fn *note, void *note_ctx,
+		const struct scene_read_options *opt, scene_note_fn *note, void *note_ctx,
 		struct scene **out, struct diag *d)
 {
 	struct parser p;
@@ -379,9 +394,11 @@ int scene_parse(const char *name, const char *text, size_t len,
 	s = scene_create(name);
 	if (!s)
 		return diag_set(d, RT_E_NOMEM, name, 0, 0, "out of memory");
-	hash_start(&hash, text, len);
-	rc = parse_scene(&p, s);
-	s->source_hash = hash_finish(&hash);
+	if (opt && opt->hash)
+		hash_start(&hash, text, len);
+	rc = parse_scene(&p, s, opt && opt->threads > 1 ? opt->threads : 1);
+	if (opt && opt->hash)
+		s->source_hash = hash_finish(&hash);
 	if (rc < 0) {
 		scene_destroy(s);
 		return rc;

@@ -100,8 +100,8 @@ int scene_add_floor(struct scene *s, double width, double tile, struct diag *d)
 	return scene_add_shape(s, floor, d);
 }
 
-int scene_load(const char *path, scene_note_fn *note, void *note_ctx,
-	       struct scene **out, struct diag *d)
+int scene_load(const char *path, const struct scene_read_options *opt,
+	       scene_note_fn *note, void *note_ctx, struct scene **out, struct diag *d)
 {
 	const char *name = strcmp(path, "-") == 0 ? "<stdin>" : path;
 	char *text;
@@ -112,7 +112,7 @@ int scene_load(const char *path, scene_note_fn *note, void *note_ctx,
 	rc = file_read_all(path, "scene file", RT_MAX_SCENE_BYTES, &text, &len, d);
 	if (rc < 0)
 		return rc;
-	rc = scene_parse(name, text, len, note, note_ctx, out, d);
+	rc = scene_parse(name, text, len, opt, note, note_ctx, out, d);
 	rt_free(text);
 	return rc;
 }
@@ -126,7 +126,7 @@ int scene_test_scene(struct scene **out, struct diag *d)
 		"1\n"
 		"-50 50 50  1 1 1\n";
 
-	return scene_parse("<test scene>", text, sizeof(text) - 1, NULL, NULL, out, d);
+	return scene_parse("<test scene>", text, sizeof(text) - 1, NULL, NULL, NULL, out, d);
 }
 
 int scene_prepare(struct scene *s, int threads, struct diag *d)

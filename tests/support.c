@@ -61,7 +61,7 @@ struct scene *support_parse(const char *text)
 	int rc;
 
 	diag_clear(&d);
-	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, &s, &d);
+	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, NULL, &s, &d);
 	if (rc < 0) {
 		print_error("parse failed: %s:%d:%d: %s\n", d.file, d.line, d.col, d.msg);
 		fail();
@@ -75,7 +75,7 @@ int support_parse_error(const char *text, struct diag *d)
 	int rc;
 
 	diag_clear(d);
-	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, &s, d);
+	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, NULL, &s, d);
 	if (rc == 0) {
 		scene_destroy(s);
 		print_error("expected a parse error, the text parsed\n");

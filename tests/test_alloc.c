@@ -59,7 +59,7 @@ static int load_all(const char *text, size_t len, struct scene **out, struct dia
 	int rc;
 
 	*notes = 0;
-	rc = scene_parse("sweep.txt", text, len, count_note, notes, out, d);
+	rc = scene_parse("sweep.txt", text, len, NULL, count_note, notes, out, d);
 	if (rc < 0) {
 		assert_null(*out);
 		return rc;
@@ -170,7 +170,7 @@ static void test_alloc_sweep_scene_load(void **state)
 
 		diag_clear(&d);
 		rt_alloc_fail_from(n);
-		rc = scene_load(path, count_note, &notes, &s, &d);
+		rc = scene_load(path, NULL, count_note, &notes, &s, &d);
 		rt_alloc_fail_from(0);
 		if (rc == 0) {
 			assert_int_equal(s->n_shapes, 8);

@@ -40,7 +40,7 @@ static struct scene *parse_noted(const char *text, struct notes *ns)
 
 	memset(ns, 0, sizeof(*ns));
 	diag_clear(&d);
-	if (scene_parse("test.txt", text, strlen(text), collect_note, ns, &s, &d) < 0) {
+	if (scene_parse("test.txt", text, strlen(text), NULL, collect_note, ns, &s, &d) < 0) {
 		print_error("parse failed: %s:%d:%d: %s\n", d.file, d.line, d.col, d.msg);
 		fail();
 	}
@@ -590,7 +590,7 @@ static void test_parse_load_missing_file(void **state)
 
 	(void)state;
 	diag_clear(&d);
-	assert_int_equal(scene_load("/nonexistent/scene.txt", NULL, NULL, &s, &d), -RT_E_IO);
+	assert_int_equal(scene_load("/nonexistent/scene.txt", NULL, NULL, NULL, &s, &d), -RT_E_IO);
 	assert_null(s);
 	assert_string_equal(d.file, "/nonexistent/scene.txt");
 	assert_non_null(strstr(d.msg, "cannot open"));
@@ -640,7 +640,7 @@ static struct scene *load_real(const char *name, struct notes *ns)
 	real_path(path, sizeof(path), name);
 	memset(ns, 0, sizeof(*ns));
 	diag_clear(&d);
-	if (scene_load(path, collect_note, ns, &s, &d) < 0) {
+	if (scene_load(path, NULL, collect_note, ns, &s, &d) < 0) {
 		print_error("%s:%d:%d: %s\n", d.file, d.line, d.col, d.msg);
 		fail();
 	}
@@ -788,7 +788,7 @@ static void check_real_error(const char *name, int line, int col, const char *wo
 
 	real_path(path, sizeof(path), name);
 	diag_clear(&d);
-	assert_int_equal(scene_load(path, NULL, NULL, &s, &d), -RT_E_SYNTAX);
+	assert_int_equal(scene_load(path, NULL, NULL, NULL, &s, &d), -RT_E_SYNTAX);
 	assert_null(s);
 	assert_string_equal(d.file, path);
 	if (d.line != line || d.col != col || !strstr(d.msg, words)) {

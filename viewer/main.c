@@ -113,7 +113,7 @@ static int parse_args(int argc, char **argv)
 		case 'j':
 			if (cli_parse_long("--threads", optarg, 1, 64, &n, &d) < 0)
 				return usage_error("%s", d.msg);
-			v.threads = (int)n;
+			v.threads = v.opts.read.threads = (int)n;
 			break;
 		case 'h':
 			usage(stdout);

@@ -68,7 +68,7 @@ int fuzz_scene_one(const uint8_t *data, size_t size)
 	int rc;
 
 	diag_clear(&d);
-	rc = scene_parse("fuzz.txt", (const char *)data, size, fuzz_note, NULL, &s, &d);
+	rc = scene_parse("fuzz.txt", (const char *)data, size, NULL, fuzz_note, NULL, &s, &d);
 	if (rc < 0) {
 		/* A failed parse reports a located error and returns nothing. */
 		if (s != NULL || d.msg[0] == '\0' || d.line < 0 || d.col < 0)
