@@ -7,6 +7,7 @@
 #include <math.h>
 #include <pthread.h>
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,10 +73,35 @@ static void box_empty(struct build_box *b)
 	}
 }
 
-/* b grows to take in the box lo..hi; written out per axis, as -O2 does not
- * unroll it and the loop control was a third of the binning's work. */
-static inline void box_grow_by(struct build_box *b, const double lo[3], const double hi[3])
+/* The box code reads a ref's or a box's bounds as six doubles in a row. */
+typedef char build_ref_bounds_in_a_row[offsetof(struct build_ref, hi) == 3 * sizeof(double) ? 1 : -1];
+typedef char build_box_bounds_in_a_row[offsetof(struct build_box, hi) == 3 * sizeof(double) ? 1 : -1];
+
+/* b grows to take in the box v (its minima then its maxima, six doubles
+ * in a row, as in a ref and a build_box).  With SSE2 that is three
+ * two-lane operations; MINPD and MAXPD give their first operand where the
+ * comparison holds and the second otherwise, as the plain C does, so the
+ * tree is the same either way. */
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+#include <emmintrin.h>
+
+static inline void box_grow_by(struct build_box *b, const double *v)
 {
+	double *d = b->lo;
+	__m128d lo01 = _mm_loadu_pd(v), lo2hi0 = _mm_loadu_pd(v + 2), hi12 = _mm_loadu_pd(v + 4);
+	__m128d b2 = _mm_loadu_pd(d + 2);
+
+	_mm_storeu_pd(d, _mm_min_pd(lo01, _mm_loadu_pd(d)));
+	_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(lo2hi0, b2), _mm_min_pd(lo2hi0, b2)));
+	_mm_storeu_pd(d + 4, _mm_max_pd(hi12, _mm_loadu_pd(d + 4)));
+}
+#else
+static inline void box_grow_by(struct build_box *b, const double *v)
+{
+	const double *lo = v, *hi = v + 3;
+
+	/* Written out per axis: -O2 does not unroll the loop, and its
+	 * control was a third of the binning's work. */
 	b->lo[0] = lo[0] < b->lo[0] ? lo[0] : b->lo[0];
 	b->lo[1] = lo[1] < b->lo[1] ? lo[1] : b->lo[1];
 	b->lo[2] = lo[2] < b->lo[2] ? lo[2] : b->lo[2];
@@ -83,15 +109,16 @@ static inline void box_grow_by(struct build_box *b, const double lo[3], const do
 	b->hi[1] = hi[1] > b->hi[1] ? hi[1] : b->hi[1];
 	b->hi[2] = hi[2] > b->hi[2] ? hi[2] : b->hi[2];
 }
+#endif
 
 static inline void box_grow_ref(struct build_box *b, const struct build_ref *r)
 {
-	box_grow_by(b, r->lo, r->hi);
+	box_grow_by(b, r->lo);
 }
 
 static inline void box_grow(struct build_box *b, const struct build_box *o)
 {
-	box_grow_by(b, o->lo, o->hi);
+	box_grow_by(b, o->lo);
 }
 
 /* The float next to f towards +inf (up) or -inf, as nextafterf gives it
@@ -178,10 +205,10 @@ static bool sah_split(const struct build_ref *refs, size_t n, const struct build
 		double extent = centres->hi[axis] - centres->lo[axis];
 		usable[axis] = extent > 0.0;
 		scale[axis] = usable[axis] ? ACCEL_BINS / extent : 0.0;
-		for (b = 0; b < ACCEL_BINS; b++) {
-			box_empty(&bins[axis][b].box);
+		/* A bin's box is set by its first ref (the same as growing an
+		 * empty box by it), so only the counts need clearing. */
+		for (b = 0; b < ACCEL_BINS; b++)
 			bins[axis][b].n = 0;
-		}
 	}
 	for (i = 0; i < n; i++) {
 		for (axis = 0; axis < 3; axis++) {
@@ -189,46 +216,51 @@ static bool sah_split(const struct build_ref *refs, size_t n, const struct build
 			if (!usable[axis])
 				continue;
 			bin = &bins[axis][bin_of(ref_centre(&refs[i], axis), centres->lo[axis], scale[axis])];
-			box_grow_ref(&bin->box, &refs[i]);
-			bin->n++;
+			if (bin->n++ == 0)
+				memcpy(&bin->box, refs[i].lo, sizeof(bin->box));
+			else
+				box_grow_ref(&bin->box, &refs[i]);
 		}
 	}
 	for (axis = 0; axis < 3; axis++) {
 		struct build_box left, acc;
 		double right_area[ACCEL_BINS];
 		size_t right_n[ACCEL_BINS], left_n = 0;
+		int used[ACCEL_BINS], n_used = 0, j;
 
 		if (!usable[axis])
 			continue;
-		/* Sweep from the right for the right-hand areas, then from the
-		 * left.  An empty bin leaves a box as it is, so it is skipped
-		 * (most bins of the many small nodes are empty). */
-		box_empty(&acc);
-		right_n[ACCEL_BINS - 1] = 0;
-		right_area[ACCEL_BINS - 1] = 0.0;
-		for (b = ACCEL_BINS - 1; b > 0; b--) {
-			right_n[b - 1] = right_n[b] + bins[axis][b].n;
-			if (bins[axis][b].n == 0) {
-				right_area[b - 1] = right_area[b];
-				continue;
-			}
-			box_grow(&acc, &bins[axis][b].box);
-			right_area[b - 1] = box_area(&acc);
-		}
-		box_empty(&left);
-		for (b = 0; b < ACCEL_BINS - 1; b++) {
-			double cost;
+		/* Only the bins that hold refs matter (most bins of the many
+		 * small nodes are empty): a cut after an empty bin makes the
+		 * same halves at the same cost as the cut after the last bin
+		 * before it that holds refs, which comes first and wins. */
+		for (b = 0; b < ACCEL_BINS; b++)
 			if (bins[axis][b].n > 0)
-				box_grow(&left, &bins[axis][b].box);
-			left_n += bins[axis][b].n;
-			if (left_n == 0 || right_n[b] == 0)
-				continue;
-			cost = (double)left_n * box_area(&left) + (double)right_n[b] * right_area[b];
+				used[n_used++] = b;
+		if (n_used < 2)
+			continue;
+		/* Sweep from the right for the right-hand areas and counts of
+		 * the cuts after used[0 .. n_used - 2], then from the left. */
+		acc = bins[axis][used[n_used - 1]].box;
+		right_n[n_used - 2] = bins[axis][used[n_used - 1]].n;
+		right_area[n_used - 2] = box_area(&acc);
+		for (j = n_used - 2; j > 0; j--) {
+			box_grow(&acc, &bins[axis][used[j]].box);
+			right_n[j - 1] = right_n[j] + bins[axis][used[j]].n;
+			right_area[j - 1] = box_area(&acc);
+		}
+		left = bins[axis][used[0]].box;
+		for (j = 0; j < n_used - 1; j++) {
+			double cost;
+			if (j > 0)
+				box_grow(&left, &bins[axis][used[j]].box);
+			left_n += bins[axis][used[j]].n;
+			cost = (double)left_n * box_area(&left) + (double)right_n[j] * right_area[j];
 			if (cost < best) {
 				best = cost;
 				found = true;
 				*out_axis = axis;
-				*out_pos = centres->lo[axis] + (b + 1) / scale[axis];
+				*out_pos = centres->lo[axis] + (used[j] + 1) / scale[axis];
 			}
 		}
 	}
