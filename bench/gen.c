@@ -118,12 +118,13 @@ static void write_surface(long n)
 			}
 			pick -= balls[k][3] * balls[k][3];
 		}
-		/* Points below the floor are drawn again. */
+		/* Points too near the floor are drawn again: every ball's upper
+		 * half is above this. */
 		do {
 			random_unit(v);
 			for (k = 0; k < 3; k++)
 				c[k] = ball[k] + ball[3] * v[k];
-		} while (c[2] < size);
+		} while (c[2] < (size < 0.5 * ball[3] ? size : 0.5 * ball[3]));
 		if (i % 2 == 0) {
 			write_sphere(c, size);
 		} else {

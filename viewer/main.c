@@ -57,7 +57,8 @@ static void usage(FILE *f)
 		"the same image.  Press h in the window for the keys.\n"
 		"\n"
 		"%s"
-		"  -j, --threads N        capture threads (default: all %d online cores)\n"
+		"  -j, --threads N        threads for reading the file, building the hierarchy\n"
+		"                         and capturing (default: all %d online cores)\n"
 		"  -h, --help             show this help\n"
 		"  -V, --version          show the version\n",
 		cli_scene_help, cli_default_threads());
