@@ -23,6 +23,12 @@ struct lexer {
 void lexer_init(struct lexer *lx, const char *text, size_t len);
 /* The next token, or one with text NULL (and the end's position) at EOF. */
 struct token lexer_next(struct lexer *lx);
+/* The common case of reading a number, in one pass: when the next token
+ * is [+-]digits[.digits] with at most 15 digits and no comment comes
+ * before it, reads it into *t and its value into *out, exactly as
+ * lexer_next and lexer_number would, and returns true; otherwise returns
+ * false and leaves the lexer as it was. */
+bool lexer_next_simple_number(struct lexer *lx, struct token *t, double *out);
 /* Parses a whole token as a finite decimal real, as strtod reads it but
  * without nan, inf or hex.  Returns false when it is not one. */
 bool lexer_number(const struct token *t, double *out);

@@ -79,6 +79,64 @@ struct token lexer_next(struct lexer *lx)
 	}
 }
 
+/* The value of [+-]digits[.digits] with at most 15 digits in all: m /
+ * 10^fraction, the one rounding of two exact doubles, which is what
+ * strtod returns.  See lexer_simple_number. */
+static const double lexer_pow10[16] = {
+	1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+};
+
+bool lexer_next_simple_number(struct lexer *lx, struct token *t, double *out)
+{
+	const char *p = lx->pos, *end = lx->end, *start, *line_start = lx->line_start;
+	int line = lx->line, digits = 0, fraction = 0;
+	bool negative = false, point = false;
+	int64_t m = 0;
+	unsigned cls = 0;
+	double v;
+
+	while (p < end && ((cls = lexer_class_of(*p)) & LX_SPACE)) {
+		if (cls & LX_NEWLINE) {
+			line++;
+			line_start = p + 1;
+		}
+		p++;
+	}
+	if (p == end)
+		return false;
+	start = p;
+	if (*p == '-' || *p == '+')
+		negative = *p++ == '-';
+	for (; p < end; p++) {
+		if (*p >= '0' && *p <= '9') {
+			if (++digits > 15)
+				return false;
+			m = m * 10 + (*p - '0');
+			fraction += point;
+		} else if (*p == '.' && !point) {
+			point = true;
+		} else {
+			break;
+		}
+	}
+	/* The token must end here, as lexer_next would end it: at a space,
+	 * a comment or the end.  Anything else (an exponent, a letter, a
+	 * second point, a NUL) is for the general path. */
+	if (digits == 0 ||
+	    (p < end && !(lexer_class_of(*p) & LX_SPACE) && !lexer_at_comment(p, end)))
+		return false;
+	v = (double)m / lexer_pow10[fraction];
+	*out = negative ? -v : v;
+	t->text = start;
+	t->len = (size_t)(p - start);
+	t->line = line;
+	t->col = (int)(start - line_start) + 1;
+	lx->pos = p;
+	lx->line = line;
+	lx->line_start = line_start;
+	return true;
+}
+
 /* Copies the token into buf as a C string; false when it does not fit or
  * holds a NUL byte (strtod would stop there: "1\0" "6" must not read as 1). */
 static bool token_copy(const struct token *t, char *buf, size_t size)
@@ -97,10 +155,6 @@ static bool token_copy(const struct token *t, char *buf, size_t size)
  * rounded value, which is what strtod returns.  False: not that case. */
 static bool lexer_simple_number(const struct token *t, double *out)
 {
-	static const double pow10[16] = {
-		1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
-		1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-	};
 	const char *c = t->text, *end = t->text + t->len;
 	bool negative = false, point = false;
 	int64_t m = 0;
@@ -123,7 +177,7 @@ static bool lexer_simple_number(const struct token *t, double *out)
 	}
 	if (digits == 0)
 		return false;
-	v = (double)m / pow10[fraction];
+	v = (double)m / lexer_pow10[fraction];
 	*out = negative ? -v : v;
 	return true;
 }

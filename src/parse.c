@@ -109,6 +109,8 @@ static int parser_not_a_number(struct parser *p, const char *expected, const cha
 
 int parser_number(struct parser *p, const char *what, double *out)
 {
+	if (lexer_next_simple_number(&p->lx, &p->last, out))
+		return 0;
 	parser_next(p);
 	if (!lexer_number(&p->last, out))
 		return parser_not_a_number(p, "a number", what);

@@ -1,5 +1,6 @@
 /* The lexer: tokens and their positions, the three comment forms, CRLF,
  * and which tokens are numbers. */
+#include <stdint.h>
 #include <string.h>
 
 #include "lexer.h"
@@ -240,6 +241,61 @@ static void test_lexer_looks_numeric(void **state)
 	assert_false(looks_numeric(""));
 }
 
+/* The one-pass number reader against lexer_next + lexer_number, on random
+ * texts made of the characters that matter (digits, signs, points,
+ * exponents, spaces, newlines, CR, comments, a letter, a NUL): whenever it
+ * reads a number, the general path must read the same token, at the same
+ * place, with the same value, and leave the lexer in the same state; when
+ * it declines, the lexer must be untouched. */
+static void test_lexer_simple_number_matches_general_path(void **state)
+{
+	static const char alphabet[] = "0123456789012345678901234567890123456789"
+				       "+-..eE  \t\n\r#//x";
+	uint64_t rng = 12345;
+	int round, taken = 0;
+
+	(void)state;
+	for (round = 0; round < 200000; round++) {
+		char text[40];
+		size_t len, i;
+		struct lexer fast, slow;
+		struct token tf, ts;
+		double vf = 0.0, vs = 0.0;
+
+		rng = rng * 6364136223846793005u + 1442695040888963407u;
+		len = (size_t)(rng >> 59) + 1;
+		for (i = 0; i < len; i++) {
+			rng = rng * 6364136223846793005u + 1442695040888963407u;
+			/* One character in 64 is a NUL. */
+			text[i] = (rng >> 27) % 64 == 0 ? '\0'
+							 : alphabet[(rng >> 33) % (sizeof(alphabet) - 1)];
+		}
+		lexer_init(&fast, text, len);
+		lexer_init(&slow, text, len);
+		if (!lexer_next_simple_number(&fast, &tf, &vf)) {
+			assert_ptr_equal(fast.pos, text);
+			assert_int_equal(fast.line, 1);
+			assert_ptr_equal(fast.line_start, text);
+			continue;
+		}
+		taken++;
+		ts = lexer_next(&slow);
+		assert_non_null(ts.text);
+		assert_ptr_equal(tf.text, ts.text);
+		assert_int_equal(tf.len, ts.len);
+		assert_int_equal(tf.line, ts.line);
+		assert_int_equal(tf.col, ts.col);
+		assert_true(lexer_number(&ts, &vs));
+		assert_memory_equal(&vf, &vs, sizeof(vf));
+		assert_ptr_equal(fast.pos, slow.pos);
+		assert_int_equal(fast.line, slow.line);
+		assert_ptr_equal(fast.line_start, slow.line_start);
+	}
+	/* Enough of both outcomes to mean something. */
+	print_message("simple numbers read in %d of 200000 texts\n", taken);
+	assert_true(taken > 20000 && taken < 180000);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -254,6 +310,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_lexer_number_token_too_long),
 		cmocka_unit_test(test_lexer_number_uses_token_length),
 		cmocka_unit_test(test_lexer_looks_numeric),
+		cmocka_unit_test(test_lexer_simple_number_matches_general_path),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }
