@@ -383,15 +383,37 @@ static uintptr_t leaf_slot(const struct build *b, size_t first, size_t n)
 	assert((one & 7) == 0);
 	return one;
 }
-static void build_children(struct build *b, size_t index, size_t first, size_t n, size_t split,
-			   int depth, const struct build_box bounds[4], int threads);
+/* Subtrees waiting for a thread.  Whoever splits a big node puts its
+ * right-hand child here and goes on with the left; idle threads take the
+ * most recent.  So the threads stay busy however unevenly the tree
+ * splits, and as every subtree writes only its own nodes, which thread
+ * builds it changes nothing. */
+#define BUILD_TASKS_MAX 256
+
+struct build_task {
+	size_t parent, first, n, base;
+	int depth;
+	struct build_box box, centres;
+};
+
+struct build_pool {
+	struct build *b;
+	pthread_mutex_t lock;
+	pthread_cond_t cond;
+	struct build_task task[BUILD_TASKS_MAX];
+	int n_tasks;
+	int busy;		/* threads building a task */
+};
+
+static void build_children(struct build *b, struct build_pool *pool, size_t index, size_t first,
+			   size_t n, size_t split, int depth, const struct build_box bounds[4]);
 
 /* Builds the subtree over refs[first, first + n), with the given box and
  * centre bounds, as child c of node `parent`: a leaf, or the node at index
  * base and what lies below it. */
-static void build_child(struct build *b, size_t parent, int c, size_t first, size_t n,
-			size_t base, int depth, const struct build_box *box,
-			const struct build_box *centres, int threads)
+static void build_child(struct build *b, struct build_pool *pool, size_t parent, int c,
+			size_t first, size_t n, size_t base, int depth,
+			const struct build_box *box, const struct build_box *centres)
 {
 	struct build_box bounds[4];
 	size_t split = choose_split(b, first, n, depth, box, centres, bounds);
@@ -401,60 +423,122 @@ static void build_child(struct build *b, size_t parent, int c, size_t first, siz
 		return;
 	}
 	b->nodes[parent].slot[c] = (uintptr_t)base << 3 | ACCEL_SLOT_NODE;
-	build_children(b, base, first, n, split, depth + 1, bounds, threads);
+	build_children(b, pool, base, first, n, split, depth + 1, bounds);
 }
 
-struct build_task {
-	struct build *b;
-	size_t parent, first, n, base;
-	int depth, threads;
-	const struct build_box *box, *centres;
-};
-
-static void *build_task_run(void *arg)
+/* Offers the right-hand child of a big node to the other threads; false
+ * when the caller is to build it. */
+static bool pool_offer(struct build_pool *pool, size_t parent, size_t first, size_t n,
+		       size_t base, int depth, const struct build_box *box,
+		       const struct build_box *centres)
 {
-	const struct build_task *t = arg;
+	bool taken = false;
 
-	build_child(t->b, t->parent, 1, t->first, t->n, t->base, t->depth, t->box, t->centres,
-		    t->threads);
-	return NULL;
-}
-
-/* The threads for one part of a node's work: its share, rounded, and at
- * least one. */
-static int thread_share(int threads, size_t part, size_t n)
-{
-	int k = (int)((double)threads * (double)part / (double)n + 0.5);
-
-	return k < 1 ? 1 : k;
+	pthread_mutex_lock(&pool->lock);
+	if (pool->n_tasks < BUILD_TASKS_MAX) {
+		struct build_task *t = &pool->task[pool->n_tasks++];
+		t->parent = parent;
+		t->first = first;
+		t->n = n;
+		t->base = base;
+		t->depth = depth;
+		t->box = *box;
+		t->centres = *centres;
+		taken = true;
+		pthread_cond_signal(&pool->cond);
+	}
+	pthread_mutex_unlock(&pool->lock);
+	return taken;
 }
 
 /* Builds both children of node `index`, which stands for refs[first,
  * first + n) split after `split` of them.  Each child writes only its own
- * slot of the node, so when both are big a second thread takes the
- * right-hand one, the threads shared in proportion to the work.  A small
- * part still gets a thread of its own rather than leaving the big one
- * fewer (briefly one more thread than asked for); when no thread can be
- * started, this one builds both. */
-static void build_children(struct build *b, size_t index, size_t first, size_t n, size_t split,
-			   int depth, const struct build_box bounds[4], int threads)
+ * slot of the node. */
+static void build_children(struct build *b, struct build_pool *pool, size_t index, size_t first,
+			   size_t n, size_t split, int depth, const struct build_box bounds[4])
 {
+	bool offered;
+
 	set_child_box(&b->nodes[index], 0, &bounds[0]);
 	set_child_box(&b->nodes[index], 1, &bounds[2]);
-	if (threads > 1 && split >= ACCEL_PARALLEL_MIN && n - split >= ACCEL_PARALLEL_MIN) {
-		pthread_t thread;
-		struct build_task t = { b, index, first + split, n - split, index + split, depth,
-					thread_share(threads, n - split, n), &bounds[2], &bounds[3] };
-		if (pthread_create(&thread, NULL, build_task_run, &t) == 0) {
-			build_child(b, index, 0, first, split, index + 1, depth, &bounds[0],
-				    &bounds[1], thread_share(threads, split, n));
-			pthread_join(thread, NULL);
-			return;
-		}
+	offered = pool && split >= ACCEL_PARALLEL_MIN && n - split >= ACCEL_PARALLEL_MIN &&
+		  pool_offer(pool, index, first + split, n - split, index + split, depth,
+			     &bounds[2], &bounds[3]);
+	build_child(b, pool, index, 0, first, split, index + 1, depth, &bounds[0], &bounds[1]);
+	if (!offered)
+		build_child(b, pool, index, 1, first + split, n - split, index + split, depth,
+			    &bounds[2], &bounds[3]);
+}
+
+/* A thread of the pool: takes tasks until there are none and no thread
+ * is building one (which could offer more). */
+static void *pool_work(void *arg)
+{
+	struct build_pool *pool = arg;
+
+	pthread_mutex_lock(&pool->lock);
+	for (;;) {
+		struct build_task t;
+		while (pool->n_tasks == 0 && pool->busy > 0)
+			pthread_cond_wait(&pool->cond, &pool->lock);
+		if (pool->n_tasks == 0)
+			break;
+		t = pool->task[--pool->n_tasks];
+		pool->busy++;
+		pthread_mutex_unlock(&pool->lock);
+		build_child(pool->b, pool, t.parent, 1, t.first, t.n, t.base, t.depth, &t.box,
+			    &t.centres);
+		pthread_mutex_lock(&pool->lock);
+		pool->busy--;
 	}
-	build_child(b, index, 0, first, split, index + 1, depth, &bounds[0], &bounds[1], threads);
-	build_child(b, index, 1, first + split, n - split, index + split, depth, &bounds[2],
-		    &bounds[3], threads);
+	/* The last one out wakes the others to find the same. */
+	pthread_cond_broadcast(&pool->cond);
+	pthread_mutex_unlock(&pool->lock);
+	return NULL;
+}
+
+/* Builds below the root's two children with up to `threads` threads: this
+ * one and threads - 1 others (fewer when they cannot be started; with
+ * none, this one builds everything). */
+static void build_parallel(struct build *b, size_t n, size_t split, const struct build_box bounds[4],
+			   int threads)
+{
+	struct build_pool pool;
+	pthread_t thread[64];
+	int k, started = 0;
+
+	if (threads > 64)
+		threads = 64;
+	if (threads < 2 || n < 2 * ACCEL_PARALLEL_MIN ||
+	    pthread_mutex_init(&pool.lock, NULL) != 0) {
+		build_children(b, NULL, 0, 0, n, split, 1, bounds);
+		return;
+	}
+	if (pthread_cond_init(&pool.cond, NULL) != 0) {
+		pthread_mutex_destroy(&pool.lock);
+		build_children(b, NULL, 0, 0, n, split, 1, bounds);
+		return;
+	}
+	pool.b = b;
+	pool.n_tasks = 0;
+	/* This thread counts as busy until its own part is built, so that
+	 * the others wait for the tasks it will offer. */
+	pool.busy = 1;
+	for (k = 0; k < threads - 1; k++) {
+		if (pthread_create(&thread[started], NULL, pool_work, &pool) != 0)
+			break;
+		started++;
+	}
+	build_children(b, &pool, 0, 0, n, split, 1, bounds);
+	pthread_mutex_lock(&pool.lock);
+	pool.busy--;
+	pthread_cond_broadcast(&pool.cond);
+	pthread_mutex_unlock(&pool.lock);
+	pool_work(&pool);
+	for (k = 0; k < started; k++)
+		pthread_join(thread[k], NULL);
+	pthread_cond_destroy(&pool.cond);
+	pthread_mutex_destroy(&pool.lock);
 }
 
 /* Node 0 holds the two halves of the whole set; a set that makes one leaf
@@ -478,7 +562,7 @@ static void build_root(struct build *b, size_t n, int threads)
 		b->nodes[0].slot[1] = 0;
 		return;
 	}
-	build_children(b, 0, 0, n, split, 1, bounds, threads);
+	build_parallel(b, n, split, bounds, threads);
 }
 
 /* Moves the nodes the tree uses to the front of the array, keeping their
