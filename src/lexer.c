@@ -79,19 +79,49 @@ struct token lexer_next(struct lexer *lx)
 	}
 }
 
-/* The value of [+-]digits[.digits] with at most 15 digits in all: m /
- * 10^fraction, the one rounding of two exact doubles, which is what
- * strtod returns.  See lexer_simple_number. */
-static const double lexer_pow10[16] = {
-	1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-};
+/* The common case, [+-]digits[.digits] with at most 15 digits, without
+ * strtod (which was half of the parse time): the digits make an integer
+ * m < 10^15 < 2^53 and the k fraction digits a power 10^k <= 10^15, both
+ * exact in a double, so the one rounding of m / 10^k gives the correctly
+ * rounded value, which is what strtod returns.  Reads from c as far as
+ * that form goes and returns where it stopped, or NULL when what it read
+ * is not that case (no digit, or too many). */
+static const char *lexer_scan_decimal(const char *c, const char *end, double *out)
+{
+	static const double pow10[16] = {
+		1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7,
+		1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+	};
+	bool negative = false, point = false;
+	int64_t m = 0;
+	int digits = 0, fraction = 0;
+	double v;
+
+	if (c < end && (*c == '-' || *c == '+'))
+		negative = *c++ == '-';
+	for (; c < end; c++) {
+		if (*c >= '0' && *c <= '9') {
+			if (++digits > 15)
+				return NULL;
+			m = m * 10 + (*c - '0');
+			fraction += point;
+		} else if (*c == '.' && !point) {
+			point = true;
+		} else {
+			break;
+		}
+	}
+	if (digits == 0)
+		return NULL;
+	v = (double)m / pow10[fraction];
+	*out = negative ? -v : v;
+	return c;
+}
 
 bool lexer_next_simple_number(struct lexer *lx, struct token *t, double *out)
 {
 	const char *p = lx->pos, *end = lx->end, *start, *line_start = lx->line_start;
-	int line = lx->line, digits = 0, fraction = 0;
-	bool negative = false, point = false;
-	int64_t m = 0;
+	int line = lx->line;
 	unsigned cls = 0;
 	double v;
 
@@ -102,31 +132,14 @@ bool lexer_next_simple_number(struct lexer *lx, struct token *t, double *out)
 		}
 		p++;
 	}
-	if (p == end)
-		return false;
 	start = p;
-	if (*p == '-' || *p == '+')
-		negative = *p++ == '-';
-	for (; p < end; p++) {
-		if (*p >= '0' && *p <= '9') {
-			if (++digits > 15)
-				return false;
-			m = m * 10 + (*p - '0');
-			fraction += point;
-		} else if (*p == '.' && !point) {
-			point = true;
-		} else {
-			break;
-		}
-	}
-	/* The token must end here, as lexer_next would end it: at a space,
-	 * a comment or the end.  Anything else (an exponent, a letter, a
-	 * second point, a NUL) is for the general path. */
-	if (digits == 0 ||
-	    (p < end && !(lexer_class_of(*p) & LX_SPACE) && !lexer_at_comment(p, end)))
+	p = lexer_scan_decimal(start, end, &v);
+	/* The token must end where the number does, as lexer_next would end
+	 * it: at a space, a comment or the end.  Anything else (an exponent,
+	 * a letter, a second point, a NUL) is for the general path. */
+	if (!p || (p < end && !(lexer_class_of(*p) & LX_SPACE) && !lexer_at_comment(p, end)))
 		return false;
-	v = (double)m / lexer_pow10[fraction];
-	*out = negative ? -v : v;
+	*out = v;
 	t->text = start;
 	t->len = (size_t)(p - start);
 	t->line = line;
@@ -148,37 +161,14 @@ static bool token_copy(const struct token *t, char *buf, size_t size)
 	return true;
 }
 
-/* The common case, [+-]digits[.digits] with at most 15 digits, without
- * strtod (which was half of the parse time): the digits make an integer
- * m < 10^15 < 2^53 and the k fraction digits a power 10^k <= 10^15, both
- * exact in a double, so the one rounding of m / 10^k gives the correctly
- * rounded value, which is what strtod returns.  False: not that case. */
+/* The whole token in the common form (see lexer_scan_decimal). */
 static bool lexer_simple_number(const struct token *t, double *out)
 {
-	const char *c = t->text, *end = t->text + t->len;
-	bool negative = false, point = false;
-	int64_t m = 0;
-	int digits = 0, fraction = 0;
 	double v;
 
-	if (c < end && (*c == '-' || *c == '+'))
-		negative = *c++ == '-';
-	for (; c < end; c++) {
-		if (*c >= '0' && *c <= '9') {
-			if (++digits > 15)
-				return false;
-			m = m * 10 + (*c - '0');
-			fraction += point;
-		} else if (*c == '.' && !point) {
-			point = true;
-		} else {
-			return false;
-		}
-	}
-	if (digits == 0)
+	if (lexer_scan_decimal(t->text, t->text + t->len, &v) != t->text + t->len)
 		return false;
-	v = (double)m / lexer_pow10[fraction];
-	*out = negative ? -v : v;
+	*out = v;
 	return true;
 }
 
