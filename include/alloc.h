@@ -16,7 +16,9 @@ char *rt_strdup(const char *s);
 
 /* Test hook: the allocation numbered n (1-based, counted from this call)
  * and every later one fail; n = 0 turns failures off.  Returns how many
- * allocations were made since the previous call. */
+ * allocations were made since the previous call.  Call it while no other
+ * thread allocates; from the first call on, allocations are counted under
+ * a lock. */
 unsigned long rt_alloc_fail_from(unsigned long n);
 
 #endif

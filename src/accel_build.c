@@ -73,32 +73,41 @@ static void box_empty(struct build_box *b)
 	}
 }
 
-/* The box code reads a ref's or a box's bounds as six doubles in a row. */
+/* The box code copies a ref's or a box's bounds as six doubles in a row. */
 typedef char build_ref_bounds_in_a_row[offsetof(struct build_ref, hi) == 3 * sizeof(double) ? 1 : -1];
 typedef char build_box_bounds_in_a_row[offsetof(struct build_box, hi) == 3 * sizeof(double) ? 1 : -1];
 
-/* b grows to take in the box v (its minima then its maxima, six doubles
- * in a row, as in a ref and a build_box).  With SSE2 that is three
+/* b grows to take in the box that src begins with (a ref or a build_box:
+ * its minima then its maxima, six doubles in a row, copied out).  With SSE2 that is three
  * two-lane operations; MINPD and MAXPD give their first operand where the
  * comparison holds and the second otherwise, as the plain C does, so the
  * tree is the same either way. */
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
 #include <emmintrin.h>
 
-static inline void box_grow_by(struct build_box *b, const double *v)
+static inline void box_grow_by(struct build_box *b, const void *src)
 {
-	double *d = b->lo;
-	__m128d lo01 = _mm_loadu_pd(v), lo2hi0 = _mm_loadu_pd(v + 2), hi12 = _mm_loadu_pd(v + 4);
-	__m128d b2 = _mm_loadu_pd(d + 2);
+	double v[6], d[6];
+	__m128d lo01, lo2hi0, hi12, b2;
 
+	memcpy(v, src, sizeof(v));
+	memcpy(d, b, sizeof(d));
+	lo01 = _mm_loadu_pd(v);
+	lo2hi0 = _mm_loadu_pd(v + 2);
+	hi12 = _mm_loadu_pd(v + 4);
+	b2 = _mm_loadu_pd(d + 2);
 	_mm_storeu_pd(d, _mm_min_pd(lo01, _mm_loadu_pd(d)));
 	_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(lo2hi0, b2), _mm_min_pd(lo2hi0, b2)));
 	_mm_storeu_pd(d + 4, _mm_max_pd(hi12, _mm_loadu_pd(d + 4)));
+	memcpy(b, d, sizeof(d));
 }
 #else
-static inline void box_grow_by(struct build_box *b, const double *v)
+static inline void box_grow_by(struct build_box *b, const void *src)
 {
+	double v[6];
 	const double *lo = v, *hi = v + 3;
+
+	memcpy(v, src, sizeof(v));
 
 	/* Written out per axis: -O2 does not unroll the loop, and its
 	 * control was a third of the binning's work. */
@@ -113,12 +122,12 @@ static inline void box_grow_by(struct build_box *b, const double *v)
 
 static inline void box_grow_ref(struct build_box *b, const struct build_ref *r)
 {
-	box_grow_by(b, r->lo);
+	box_grow_by(b, r);
 }
 
 static inline void box_grow(struct build_box *b, const struct build_box *o)
 {
-	box_grow_by(b, o->lo);
+	box_grow_by(b, o);
 }
 
 /* The float next to f towards +inf (up) or -inf, as nextafterf gives it
@@ -217,7 +226,7 @@ static bool sah_split(const struct build_ref *refs, size_t n, const struct build
 				continue;
 			bin = &bins[axis][bin_of(ref_centre(&refs[i], axis), centres->lo[axis], scale[axis])];
 			if (bin->n++ == 0)
-				memcpy(&bin->box, refs[i].lo, sizeof(bin->box));
+				memcpy(&bin->box, &refs[i], sizeof(bin->box));
 			else
 				box_grow_ref(&bin->box, &refs[i]);
 		}

@@ -1,5 +1,6 @@
 /* The library's allocator: the C library's, plus a switch that makes
  * allocations fail from a chosen one on, for the allocation-failure tests. */
+#include <pthread.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -8,27 +9,38 @@
 #include "alloc.h"
 
 /* Only the tests set these, from one thread, before any render starts.
- * Until they do, allocations are not even counted: the parse and the
- * build allocate from several threads. */
+ * Until the first call of rt_alloc_fail_from nothing is counted, and no
+ * lock is taken; after it the count is kept under a lock, since the parse,
+ * the build and the render may allocate from several threads at once. */
 static bool alloc_armed;
 static unsigned long alloc_count;
 static unsigned long alloc_fail_at;
 
+static pthread_mutex_t alloc_lock = PTHREAD_MUTEX_INITIALIZER;
+
 static int alloc_should_fail(void)
 {
+	int fail;
+
 	if (!alloc_armed)
 		return 0;
+	pthread_mutex_lock(&alloc_lock);
 	alloc_count++;
-	return alloc_fail_at != 0 && alloc_count >= alloc_fail_at;
+	fail = alloc_fail_at != 0 && alloc_count >= alloc_fail_at;
+	pthread_mutex_unlock(&alloc_lock);
+	return fail;
 }
 
 unsigned long rt_alloc_fail_from(unsigned long n)
 {
-	unsigned long made = alloc_count;
+	unsigned long made;
 
-	alloc_armed = true;
+	pthread_mutex_lock(&alloc_lock);
+	made = alloc_count;
 	alloc_count = 0;
 	alloc_fail_at = n;
+	pthread_mutex_unlock(&alloc_lock);
+	alloc_armed = true;
 	return made;
 }
 

@@ -18,8 +18,13 @@
 /* A part has at least this much text: less is not worth a thread. */
 #define PARSE_PART_MIN ((size_t)512 << 10)
 #define PARSE_PARTS_MAX 64
+/* How far from where a cut should be its object keyword is looked for. */
+#define PARSE_CUT_WINDOW ((size_t)64 << 10)
+
+struct parse_parts;
 
 struct parse_part {
+	struct parse_parts *owner;
 	const char *name, *text;
 	size_t len;
 	size_t line, start, stop;	/* its first line; its objects' keywords in [start, stop) */
@@ -32,47 +37,68 @@ struct parse_part {
 	int degenerate_line[PARSE_MAX_NOTES];
 	size_t n_degenerate;
 	bool started, ok;
+	bool cancelled;		/* under owner->lock: no longer wanted */
 	pthread_t thread;
 };
 
 struct parse_parts {
 	struct parse_part part[PARSE_PARTS_MAX];
 	int n, next;		/* parts started; the next one to take */
+	pthread_mutex_t lock;
 };
 
-/* The first token at or after `from` that is an object keyword and the
- * first token of its line, or len when there is none; *line receives
- * where its line begins. */
-static size_t find_part_start(const char *text, size_t len, size_t from, size_t *line)
+/* A part's thread looks this often whether it is still wanted: an error
+ * early in the file then waits for little of the rest. */
+#define PARSE_CANCEL_EVERY 256
+
+static bool part_cancelled(struct parse_part *pt)
 {
-	size_t pos = from;
+	bool c;
 
-	while (pos < len) {
-		struct lexer lx;
-		struct token t;
-		const char *c;
+	pthread_mutex_lock(&pt->owner->lock);
+	c = pt->cancelled;
+	pthread_mutex_unlock(&pt->owner->lock);
+	return c;
+}
 
-		if (pos > 0 && text[pos - 1] != '\n') {
-			const char *nl = memchr(text + pos, '\n', len - pos);
-			if (!nl)
-				return len;
-			pos = (size_t)(nl - text) + 1;
-			continue;
-		}
-		lexer_init(&lx, text + pos, len - pos);
-		t = lexer_next(&lx);
-		if (!t.text)
-			return len;
-		/* The token must begin its line (after blanks). */
-		for (c = t.text; c > text && (c[-1] == ' ' || c[-1] == '\t'); c--)
-			;
-		if ((c == text || c[-1] == '\n') && shape_ops_find(t.text, t.len)) {
-			*line = (size_t)(c - text);
-			return (size_t)(t.text - text);
-		}
-		pos = (size_t)(t.text - text) + t.len;
+/* Whether c ends a token, as the lexer sees it: a space or a comment. */
+static bool ends_token(const char *c, const char *end)
+{
+	return *c == ' ' || *c == '\t' || *c == '\n' || *c == '\r' || *c == '\v' || *c == '\f' ||
+	       *c == '#' || (*c == '/' && c + 1 < end && c[1] == '/');
+}
+
+/* The first token in [from, stop) that is an object keyword and the first
+ * token of its line (after blanks), or stop when there is none; *line
+ * receives where its line begins.  Line by line, at the speed of memchr:
+ * the text after the objects can be long.  No token crosses stop, which
+ * is the start of such a token itself or the end of the text. */
+static size_t find_part_start(const char *text, size_t from, size_t stop, size_t *line)
+{
+	const char *end = text + stop, *c = text + from;
+
+	if (from > 0 && c[-1] != '\n') {
+		c = memchr(c, '\n', (size_t)(end - c));
+		if (!c)
+			return stop;
+		c++;
 	}
-	return len;
+	while (c < end) {
+		const char *w, *start = c;
+		while (c < end && (*c == ' ' || *c == '\t'))
+			c++;
+		for (w = c; w < end && !ends_token(w, end); w++)
+			;
+		if (w > c && shape_ops_find(c, (size_t)(w - c))) {
+			*line = (size_t)(start - text);
+			return (size_t)(c - text);
+		}
+		c = memchr(c, '\n', (size_t)(end - c));
+		if (!c)
+			return stop;
+		c++;
+	}
+	return stop;
 }
 
 static int part_push(struct parse_part *pt, struct shape *sh, int line)
@@ -124,6 +150,8 @@ static void *part_run(void *arg)
 		if (!t.text || (size_t)(t.text - pt->text) >= pt->stop ||
 		    !shape_ops_find(t.text, t.len))
 			break;
+		if (pt->n % PARSE_CANCEL_EVERY == PARSE_CANCEL_EVERY - 1 && part_cancelled(pt))
+			return NULL;
 		/* An error is left for the caller to find, reading the text
 		 * itself, if it ever gets there. */
 		if (parse_shape(&p, &sh, &kw_line, 0, 0) < 0)
@@ -164,15 +192,22 @@ struct parse_parts *parse_parts_start(const struct parser *p, int threads)
 	pp = rt_calloc(1, sizeof(*pp));
 	if (!pp)
 		return NULL;
+	if (pthread_mutex_init(&pp->lock, NULL) != 0) {
+		rt_free(pp);
+		return NULL;
+	}
 	/* The cuts, from the last: part k runs from its keyword line at or
 	 * after from + k/n of the text to the next part's start. */
 	for (k = n - 1; k >= 1; k--) {
-		size_t line = 0;
-		size_t start = find_part_start(p->text, p->len, from + left / (size_t)n * (size_t)k,
-					       &line);
+		size_t line = 0, target = from + left / (size_t)n * (size_t)k;
+		/* Objects begin every hundred bytes or so: a cut with no object
+		 * in its window is in the text after them, and not made. */
+		size_t window = stop - target < PARSE_CUT_WINDOW ? stop : target + PARSE_CUT_WINDOW;
+		size_t start = find_part_start(p->text, target, window, &line);
 		struct parse_part *pt = &pp->part[pp->n];
-		if (start >= stop)
+		if (start >= window)
 			continue;
+		pt->owner = pp;
 		pt->name = p->name;
 		pt->text = p->text;
 		pt->len = p->len;
@@ -203,11 +238,16 @@ static void part_join(struct parse_part *pt)
 	}
 }
 
-/* Drops parts k and after: the caller reads their text itself. */
+/* Drops parts k and after: the caller reads their text itself.  Their
+ * threads are told to stop first. */
 static void parts_drop_from(struct parse_parts *pp, int k)
 {
 	int i;
 
+	pthread_mutex_lock(&pp->lock);
+	for (i = k; i < pp->n; i++)
+		pp->part[i].cancelled = true;
+	pthread_mutex_unlock(&pp->lock);
 	for (i = k; i < pp->n; i++) {
 		part_join(&pp->part[i]);
 		part_free_shapes(&pp->part[i], 0);
@@ -275,5 +315,6 @@ void parse_parts_finish(struct parse_parts *pp)
 	if (!pp)
 		return;
 	parts_drop_from(pp, pp->next);
+	pthread_mutex_destroy(&pp->lock);
 	rt_free(pp);
 }

@@ -126,7 +126,10 @@ int scene_test_scene(struct scene **out, struct diag *d)
 		"1\n"
 		"-50 50 50  1 1 1\n";
 
-	return scene_parse("<test scene>", text, sizeof(text) - 1, NULL, NULL, NULL, out, d);
+	/* Hashed like a file, for the tiles of the test scene. */
+	static const struct scene_read_options opt = { 1, true };
+
+	return scene_parse("<test scene>", text, sizeof(text) - 1, &opt, NULL, NULL, out, d);
 }
 
 int scene_prepare(struct scene *s, int threads, struct diag *d)

@@ -1,9 +1,11 @@
 /* The scene and options hash: FNV-1a 64 against published test vectors,
- * hashing in pieces, and the threaded hash_start/hash_finish against the
- * plain one for inputs below and above the size that takes a thread. */
+ * hashing in pieces, the threaded hash_start/hash_finish against the plain
+ * one for inputs below and above the size that takes a thread, and which
+ * scenes get a hash. */
 #include <string.h>
 
 #include "hash.h"
+#include "scene.h"
 #include "support.h"
 
 static void test_hash_fnv1a_vectors(void **state)
@@ -44,12 +46,36 @@ static void test_hash_threaded_equals_plain(void **state)
 	test_free(buf);
 }
 
+/* Files are hashed when asked (for tiles), and the built-in test scene
+ * always, as its tiles need it too: the FNV-1a of its text, worked out
+ * independently (Python) as 0x32d7e95d47447506. */
+static void test_hash_of_scenes(void **state)
+{
+	const char text[] = "4 8\n0\n0\n";
+	struct scene_read_options opt = { 1, true };
+	struct scene *s;
+	struct diag d;
+
+	(void)state;
+	assert_int_equal(scene_test_scene(&s, &d), 0);
+	assert_true(s->source_hash == UINT64_C(0x32d7e95d47447506));
+	scene_destroy(s);
+	assert_int_equal(scene_parse("t.txt", text, sizeof(text) - 1, &opt, NULL, NULL, &s, &d), 0);
+	assert_true(s->source_hash == hash_bytes(RT_HASH_INIT, text, sizeof(text) - 1));
+	scene_destroy(s);
+	opt.hash = false;
+	assert_int_equal(scene_parse("t.txt", text, sizeof(text) - 1, &opt, NULL, NULL, &s, &d), 0);
+	assert_true(s->source_hash == 0);
+	scene_destroy(s);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_hash_fnv1a_vectors),
 		cmocka_unit_test(test_hash_in_pieces),
 		cmocka_unit_test(test_hash_threaded_equals_plain),
+		cmocka_unit_test(test_hash_of_scenes),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
