@@ -1,9 +1,8 @@
 /* Builds the bounding volume hierarchy: top down, each node split where a
- * 16-bin surface area heuristic puts it, the two halves of big nodes built
- * by different threads.  The tree is the same whatever the number of
- * threads, node for node. */
+ * 16-bin surface area heuristic puts it, the halves of big nodes built by
+ * a pool of threads.  The tree is the same whatever the number of
+ * threads, bit for bit. */
 #include <assert.h>
-#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdbool.h>
@@ -18,8 +17,9 @@
 #include "scene.h"
 
 #define ACCEL_BINS 16
-/* A subtree of fewer refs is built by the thread that meets it: below
- * this a thread costs more than it saves. */
+/* A node offers its right half to the other threads only when both halves
+ * have this many refs: below that, handing work over costs more than it
+ * saves. */
 #define ACCEL_PARALLEL_MIN 4096
 
 /* A shape being sorted into the tree: its box and the shape.  The centre

@@ -6,7 +6,7 @@
  * the part's first token, so the cuts need not be right: a cut that is
  * not where an object begins (a keyword swallowed by a malformed object,
  * or in the text after the lights) is never arrived at, and that part is
- * dropped unread. */
+ * dropped, its thread told to stop. */
 #include <pthread.h>
 #include <stdbool.h>
 #include <stdlib.h>
