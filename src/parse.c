@@ -16,7 +16,6 @@
 #include "scene.h"
 #include "shape.h"
 
-
 /* Quotes a token for a message: at most 40 bytes, unprintable bytes escaped. */
 static void token_describe(const struct token *t, char *buf, size_t size)
 {
