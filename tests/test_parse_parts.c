@@ -3,6 +3,7 @@
  * error must be exactly those of reading with one thread, whatever the
  * number of threads and wherever the file goes wrong. */
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,10 +138,10 @@ static void assert_same_scene(const struct scene *a, const struct scene *b)
 	}
 }
 
-/* Parses with 1 thread and then 2, 3, 7 and 64: the same outcome. */
-static void assert_same_for_threads(const struct text *t)
+/* Parses with 1 thread and then with each of the n_threads others: the
+ * same outcome. */
+static void assert_same_for(const struct text *t, const int *threads, size_t n_threads)
 {
-	static const int threads[] = { 2, 3, 7, 64 };
 	struct outcome *one = malloc(sizeof(*one)), *many = malloc(sizeof(*many));
 	size_t k;
 	int i;
@@ -148,7 +149,7 @@ static void assert_same_for_threads(const struct text *t)
 	assert_non_null(one);
 	assert_non_null(many);
 	parse_with(t, 1, one);
-	for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
+	for (k = 0; k < n_threads; k++) {
 		parse_with(t, threads[k], many);
 		assert_int_equal(many->rc, one->rc);
 		assert_int_equal(many->d.line, one->d.line);
@@ -165,6 +166,14 @@ static void assert_same_for_threads(const struct text *t)
 	scene_destroy(one->s);
 	free(one);
 	free(many);
+}
+
+/* 1 thread against 2, 3, 7 and 64. */
+static void assert_same_for_threads(const struct text *t)
+{
+	static const int threads[] = { 2, 3, 7, 64 };
+
+	assert_same_for(t, threads, sizeof(threads) / sizeof(threads[0]));
 }
 
 #define BIG 60000	/* objects: over 3 MiB, enough for six parts */
@@ -218,6 +227,60 @@ static void test_parse_parts_errors_same_for_any_threads(void **state)
 	free(t.s);
 }
 
+/* Random damage anywhere in a big file: bytes overwritten with what the
+ * lexer cares about, lines deleted, object keywords and broken objects
+ * inserted at the start of a line.  Whatever the damage, 3 and 7 threads
+ * must give what 1 gives. */
+static void test_parse_parts_random_damage(void **state)
+{
+	static const char bytes[] = " \t\n\r#/-.+0123456789eExs";
+	static const char *const inserts[] = {
+		"sphere\n", "triangle 1 2 3\n", "general\n", "# sphere\n", "- sphere\n", "\n\n",
+	};
+	static const int threads[] = { 3, 7 };
+	struct text t = { NULL, 0, 0 }, base = { NULL, 0, 0 };
+	uint64_t rng = 99;
+	int round;
+
+	(void)state;
+	make_scene(&base, BIG, BIG, "", NULL);
+	for (round = 0; round < 16; round++) {
+		int k, n_damage;
+		t.len = 0;
+		put(&t, "%s", base.s);
+		rng = rng * 6364136223846793005u + 1442695040888963407u;
+		n_damage = 1 + (int)(rng >> 62);
+		for (k = 0; k < n_damage; k++) {
+			size_t at, kind;
+			rng = rng * 6364136223846793005u + 1442695040888963407u;
+			at = (size_t)(rng >> 20) % t.len;
+			kind = (size_t)(rng >> 8) % 3;
+			if (kind == 0) {
+				t.s[at] = bytes[(rng >> 40) % (sizeof(bytes) - 1)];
+			} else {
+				/* At the start of the line that holds `at`. */
+				char *line = t.s + at, *next;
+				while (line > t.s && line[-1] != '\n')
+					line--;
+				next = strchr(line, '\n');
+				if (kind == 1 && next) {
+					memmove(line, next + 1, strlen(next + 1) + 1);
+				} else {
+					const char *ins = inserts[(rng >> 40) % 6];
+					size_t n = strlen(ins), off = (size_t)(line - t.s);
+					put(&t, "%*s", (int)n, "");
+					memmove(t.s + off + n, t.s + off, t.len - n - off + 1);
+					memcpy(t.s + off, ins, n);
+				}
+				t.len = strlen(t.s);
+			}
+		}
+		assert_same_for(&t, threads, sizeof(threads) / sizeof(threads[0]));
+	}
+	free(t.s);
+	free(base.s);
+}
+
 /* A file too small to cut is read by one thread; a NULL options reads
  * with one thread too. */
 static void test_parse_parts_small_file(void **state)
@@ -246,6 +309,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_parse_parts_big_scene_same_for_any_threads),
 		cmocka_unit_test(test_parse_parts_errors_same_for_any_threads),
+		cmocka_unit_test(test_parse_parts_random_damage),
 		cmocka_unit_test(test_parse_parts_small_file),
 	};
 
