@@ -160,22 +160,29 @@ static inline float float_up(double v)
 	return (double)f < v ? float_step(f, true) : f;
 }
 
+/* box and centres grow to take in ref r and its centre. */
+static inline void bounds_add_ref(struct build_box *box, struct build_box *centres,
+				  const struct build_ref *r)
+{
+	int k;
+
+	box_grow_ref(box, r);
+	for (k = 0; k < 3; k++) {
+		double c = ref_centre(r, k);
+		centres->lo[k] = c < centres->lo[k] ? c : centres->lo[k];
+		centres->hi[k] = c > centres->hi[k] ? c : centres->hi[k];
+	}
+}
+
 static void refs_bounds(const struct build_ref *refs, size_t n, struct build_box *box,
 			struct build_box *centres)
 {
 	size_t i;
-	int k;
 
 	box_empty(box);
 	box_empty(centres);
-	for (i = 0; i < n; i++) {
-		box_grow_ref(box, &refs[i]);
-		for (k = 0; k < 3; k++) {
-			double c = ref_centre(&refs[i], k);
-			centres->lo[k] = c < centres->lo[k] ? c : centres->lo[k];
-			centres->hi[k] = c > centres->hi[k] ? c : centres->hi[k];
-		}
-	}
+	for (i = 0; i < n; i++)
+		bounds_add_ref(box, centres, &refs[i]);
 }
 
 /* Clamps before converting: with coordinates near DBL_MAX a centre or the
@@ -283,31 +290,18 @@ static size_t partition(struct build_ref *refs, size_t n, int axis, double pos,
 			struct build_box bounds[4])
 {
 	size_t i = 0, j = n;
-	int k;
 
 	box_empty(&bounds[0]);
 	box_empty(&bounds[1]);
 	box_empty(&bounds[2]);
 	box_empty(&bounds[3]);
 	while (i < j) {
-		struct build_box *box, *centres;
 		if (ref_centre(&refs[i], axis) < pos) {
-			box = &bounds[0];
-			centres = &bounds[1];
-		} else {
-			box = &bounds[2];
-			centres = &bounds[3];
-		}
-		box_grow_ref(box, &refs[i]);
-		for (k = 0; k < 3; k++) {
-			double c = ref_centre(&refs[i], k);
-			centres->lo[k] = c < centres->lo[k] ? c : centres->lo[k];
-			centres->hi[k] = c > centres->hi[k] ? c : centres->hi[k];
-		}
-		if (box == &bounds[0]) {
+			bounds_add_ref(&bounds[0], &bounds[1], &refs[i]);
 			i++;
 		} else {
 			struct build_ref tmp = refs[i];
+			bounds_add_ref(&bounds[2], &bounds[3], &tmp);
 			refs[i] = refs[--j];
 			refs[j] = tmp;
 		}

@@ -293,9 +293,10 @@ long parse_parts_take(struct parse_parts *pp, struct parser *p, struct scene *s,
 		}
 		rc = scene_add_shape(s, pt->shapes[i], p->d);
 		if (rc < 0) {
+			/* The scene has shapes up to i (the last destroyed by
+			 * scene_add_shape); the rest go with the parts. */
 			part_free_shapes(pt, i + 1);
-			parts_drop_from(pp, pp->next + 1);
-			pp->n = pp->next;
+			parts_drop_from(pp, pp->next);
 			return rc;
 		}
 	}
@@ -303,9 +304,7 @@ long parse_parts_take(struct parse_parts *pp, struct parser *p, struct scene *s,
 	p->notes_dropped += (int)(pt->n_degenerate - next_note);
 	p->lx = pt->end;
 	i = pt->n;
-	rt_free(pt->shapes);
-	pt->shapes = NULL;
-	pt->n = pt->cap = 0;
+	part_free_shapes(pt, i);
 	pp->next++;
 	return (long)i;
 }
