@@ -1,11 +1,25 @@
-# whitted: one Makefile, everything built under build/.
-#   make            library, whitted, scene2pov
-#   make render     the example scene to out/scene.png (installs what is missing)
-#   make check      every test
+# whitted: one Makefile; everything it makes goes under build/.
+#   make            the library, whitted, scene2pov, whitted-view (with freeglut), tools
+#   make plugins    the example plugins of plugins/ as build/plugins/*.so
+#   make render     the example scene to out/scene.png (installs what is missing as root)
+#   make check      every test suite, in the order of SUITES below
 #   make bench      the benchmark against POV-Ray (not a test)
-#   make deps       install missing Debian packages (as root) or print the command
+#   make deps       installs the missing Debian packages (as root) or prints the command;
+#                   it also offers the benchmark's (Embree: optional)
+#   make install    PREFIX=/usr/local: the programs, libwhitted.a, include/whitted/,
+#                   whitted.pc (pkg-config), the man pages and lib/whitted/plugins/
+#
+# The library is compiled in three ways, each for one purpose:
+#   build/           -O2: the programs and the library that is installed
+#   build/san/       ASan + UBSan (with float-cast-overflow) and the tests' allocation
+#                    failure switch: unit tests and fuzz-replay
+#   build/portable/  -DACCEL_PORTABLE, the plain C twin of the SSE2 code: portablecheck
+# and a fourth, build/fuzz/ (clang, libFuzzer), only for `make fuzz`.
 MAKEFLAGS += --no-builtin-rules
 .SUFFIXES:
+.DELETE_ON_ERROR:
+# `make` alone builds `all`, whichever rule comes first below.
+.DEFAULT_GOAL := all
 
 CC ?= cc
 PREFIX ?= /usr/local
@@ -14,34 +28,69 @@ CFLAGS ?= -O2 -g
 WARN := -std=c99 -Wall -Wextra -Wpedantic -Wmissing-prototypes
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
-ALL_CFLAGS := $(WARN) $(CFLAGS) -Iinclude $(PNG_CFLAGS) -pthread -MMD -MP
-LDLIBS := $(PNG_LIBS) -lm -pthread
-SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+ALL_CFLAGS := $(WARN) $(CFLAGS) -Iinclude -Isrc $(PNG_CFLAGS) -pthread -MMD -MP
+LDLIBS := $(PNG_LIBS) -lz -lm -pthread
+# The sanitized build is the test build: it also has the allocator's
+# failure switch (RT_TEST_HOOKS), which the installed library leaves out.
+SAN := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer \
+	-fno-sanitize-recover=all -DRT_TEST_HOOKS
+VERSION := $(shell sed -n 's/^\#define RT_VERSION "\(.*\)"/\1/p' include/whitted/version.h)
 
-CORE_PKGS := build-essential pkg-config libpng-dev libcmocka-dev
-CHECK_PKGS := $(CORE_PKGS) valgrind
-# Needed by some suites only; installed as root, otherwise those say NOT RUN.
-OPTIONAL_PKGS :=
+# Debian packages: the build's, the suites' (make check installs them as
+# root), and the benchmark's.
+CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libcmocka-dev libstb-dev
+CHECK_PKGS := $(CORE_PKGS) valgrind python3 povray povray-includes \
+	parallel openssh-client openssh-server rsync \
+	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
+BENCH_PKGS := bc time
+# Offered, not required: the benchmark's Embree column (make deps installs it).
+BENCH_OPT_PKGS := libembree-dev
 
-LIB_SRC := $(filter-out src/main.c,$(wildcard src/*.c)) $(wildcard src/shapes/*.c)
+# ---- the library ----------------------------------------------------------
+LIB_MODULES := base syntax export shapes plugin accel scene render scenefile image dist grade
+LIB_SRC := $(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
 SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
-TEST_SRC := $(wildcard tests/test_*.c) $(wildcard tests/shapes/test_*.c)
-TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/san/tests/%)
 
-# Each part of the project adds its own targets in mk/NAME.mk: programs to
-# ALL_TARGETS, Debian packages to CHECK_PKGS (or OPTIONAL_PKGS when their
-# tests can say NOT RUN without them), and the test targets that
-# `make check` runs, in order, to CHECK_TARGETS.
-ALL_TARGETS := $(BUILD)/libwhitted.a $(BUILD)/whitted
-INSTALL_PROGRAMS := whitted
-CHECK_TARGETS := unit clitest valgrind
+# ---- the programs ---------------------------------------------------------
+# src/cli/tool.c and scene_opts.c are shared by the three programs: the
+# option parsing and the printing that the library never does.
+TOOLS_SRC := src/cli/tool.c src/cli/scene_opts.c src/cli/plugin_opts.c
+WHITTED_SRC := $(filter-out $(TOOLS_SRC),$(wildcard src/cli/*.c))
+POV_SRC := $(wildcard pov_export/*.c)
+VIEWER_SRC := $(wildcard viewer/*.c)
+VIEWER_PURE := fly_camera command
+VIEWER_HAVE_GL := $(shell pkg-config --exists glut gl 2>/dev/null && echo yes)
+VIEWER_GL_CFLAGS := $(shell pkg-config --cflags glut gl 2>/dev/null)
+VIEWER_GL_LIBS := $(shell pkg-config --libs glut gl 2>/dev/null || echo -lglut -lGL)
 
-.PHONY: all render check unit clitest valgrind deps check-deps install clean
-all: build-all
--include mk/*.mk
-.PHONY: build-all
-build-all: $(ALL_TARGETS)
+PROGRAMS := whitted scene2pov $(if $(VIEWER_HAVE_GL),whitted-view)
+TOOLS := gen_scene imgcmp imgfilter
+
+# ---- the example plugins (whitted/plugin.h) --------------------------------
+# One C file each under plugins/, built as the tutorial of docs/plugins.md
+# builds one: against the installed headers only, -fPIC -shared.
+PLUGIN_SRC := $(wildcard plugins/*.c)
+PLUGINS := $(PLUGIN_SRC:plugins/%.c=$(BUILD)/plugins/%.so)
+$(BUILD)/plugins/%.so: plugins/%.c $(wildcard include/whitted/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -Iinclude -fPIC -shared -o $@ $< -lm
+plugins: $(PLUGINS)
+
+# ---- the tests ------------------------------------------------------------
+UNIT_SRC := $(wildcard tests/unit/*/test_*.c)
+UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/san/tests/%)
+UNIT_SHARED_DIR ?= $(abspath ../shared)
+
+# The suites of `make check`, in this order: the fast and local first (the
+# library's units, then the programs end to end, then hostile input), the
+# slow cross-validations last.  README's "Tests" lists the same.
+SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
+	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
+	install-test newshape plugintest
+
+.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images plugins $(SUITES)
+all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(@D)
@@ -51,6 +100,14 @@ $(BUILD)/san/%.o: %.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -c $< -o $@
 
+# The hierarchy's AVX2 walks are compiled for it on x86 (the rest of the
+# program for the baseline) and chosen at run time by what the processor
+# has (src/accel/accel_build.c); no contraction into FMA, which would
+# change the box tests' rounding.
+ifneq ($(filter x86_64% amd64% i%86%,$(shell $(CC) -dumpmachine)),)
+%/accel/accel_walk_avx2.o: ALL_CFLAGS += -mavx2 -ffp-contract=off
+endif
+
 $(BUILD)/libwhitted.a: $(LIB_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
@@ -59,19 +116,82 @@ $(BUILD)/san/libwhitted.a: $(SAN_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(BUILD)/whitted: $(BUILD)/src/main.o $(BUILD)/libwhitted.a
+$(BUILD)/libwhitted-tools.a: $(TOOLS_SRC:%.c=$(BUILD)/%.o)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/san/libwhitted-tools.a: $(TOOLS_SRC:%.c=$(BUILD)/san/%.o)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/whitted: $(WHITTED_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(BUILD)/libwhitted.a
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/san/whitted: $(BUILD)/san/src/main.o $(BUILD)/san/libwhitted.a
-	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ $(LDLIBS)
+$(BUILD)/pov_export/%.o: ALL_CFLAGS += -Ipov_export
+$(BUILD)/scene2pov: $(POV_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(BUILD)/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/tests/support.o $(BUILD)/san/libwhitted.a
-	@mkdir -p $(@D)
+$(BUILD)/viewer/%.o: ALL_CFLAGS += -Iviewer $(VIEWER_GL_CFLAGS)
+$(BUILD)/whitted-view: $(VIEWER_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(BUILD)/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(VIEWER_GL_LIBS) $(LDLIBS)
+
+# The benchmark's Embree reference (bench/embree_accel.c): whitted with
+# Embree 3 linked in place of src/accel/, and the builds of both timed on
+# the same primitives (bench/embree_build.c); only where libembree-dev is.
+EMBREE_LIB_OBJ := $(filter-out $(BUILD)/src/accel/%,$(LIB_OBJ)) $(BUILD)/bench/embree_accel.o
+$(BUILD)/whitted-embree: $(WHITTED_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(EMBREE_LIB_OBJ)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ -lembree3 $(LDLIBS)
+$(BUILD)/embree_build: $(BUILD)/bench/embree_build.o $(BUILD)/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -o $@ $^ -lembree3 $(LDLIBS)
+
+$(BUILD)/gen_scene: $(BUILD)/bench/gen.o
+	$(CC) $(ALL_CFLAGS) -o $@ $^ -lm
+
+$(BUILD)/imgcmp $(BUILD)/imgfilter: $(BUILD)/%: $(BUILD)/tests/tools/%.o $(BUILD)/tests/tools/imgio.o
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
+
+# Unit tests: one program per test file, the sanitized library, and the
+# viewer's GL-free modules for the viewer's tests.
+$(BUILD)/san/tests/%.o: ALL_CFLAGS += -Itests/unit -Iviewer \
+	-DRT_TEST_SHARED_DIR='"$(UNIT_SHARED_DIR)"' -DRT_TEST_PLUGIN_DIR='"$(abspath $(BUILD))/plugins"'
+# The plugins' and the loader's tests load the plugins of build/plugins/.
+$(filter $(BUILD)/san/tests/unit/plugins/% $(BUILD)/san/tests/unit/plugin/%,$(UNIT_BIN)): $(PLUGINS)
+$(BUILD)/san/tests/unit/viewer/test_%: $(BUILD)/san/tests/unit/viewer/test_%.o \
+	$(BUILD)/san/viewer/%.o $(BUILD)/san/tests/unit/support.o $(BUILD)/san/libwhitted-tools.a \
+	$(BUILD)/san/libwhitted.a
+	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ -lcmocka $(LDLIBS)
+$(BUILD)/san/viewer/%.o: ALL_CFLAGS += -Iviewer
+$(BUILD)/san/tests/%: $(BUILD)/san/tests/%.o $(BUILD)/san/tests/unit/support.o \
+	$(BUILD)/san/libwhitted-tools.a $(BUILD)/san/libwhitted.a
 	$(CC) $(ALL_CFLAGS) $(SAN) -o $@ $^ -lcmocka $(LDLIBS)
 
-deps check-deps:
+# The fuzz harness, replayed over the corpus with the sanitized library.
+$(BUILD)/san/fuzz_replay: tests/fuzz/replay.c tests/fuzz/harness.c tests/fuzz/harness.h \
+	$(BUILD)/san/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -o $@ tests/fuzz/replay.c tests/fuzz/harness.c \
+		$(BUILD)/san/libwhitted.a $(LDLIBS)
+
+# The image readers' fuzz harness, replayed over tests/fuzz/images.
+$(BUILD)/san/fuzz_image_replay: tests/fuzz/replay.c tests/fuzz/image_harness.c tests/fuzz/harness.h \
+	$(BUILD)/san/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -DRT_FUZZ_TARGET=fuzz_image_one -o $@ \
+		tests/fuzz/replay.c tests/fuzz/image_harness.c $(BUILD)/san/libwhitted.a $(LDLIBS)
+
+# ---- make check -----------------------------------------------------------
+# check-deps installs first; the suites then run in a new make, so that what
+# it installed (povray, freeglut) is seen.  Each suite decides at run time
+# whether it can run, and says NOT RUN (and why) only when its tools are
+# really missing.
+check: check-deps
+	@$(MAKE) --no-print-directory all plugins $(UNIT_BIN) $(BUILD)/san/fuzz_replay \
+		$(BUILD)/san/fuzz_image_replay
+	@for t in $(SUITES); do $(MAKE) --no-print-directory $$t || exit 1; done
+
+check-deps:
 	@scripts/deps.sh $(CHECK_PKGS)
-	@scripts/deps.sh --optional $(OPTIONAL_PKGS)
+
+deps: check-deps
+	@scripts/deps.sh --optional $(BENCH_PKGS) $(BENCH_OPT_PKGS)
 
 render:
 	@scripts/deps.sh $(CORE_PKGS)
@@ -80,24 +200,112 @@ render:
 	$(BUILD)/whitted -o out/scene.png scenes/scene.txt
 	@echo "wrote out/scene.png"
 
-unit: $(TEST_BIN)
-	@tests/run-unit.sh $(TEST_BIN)
-
+layout: all
+	@python3 tests/layout/modules.py $(BUILD)
+unit: $(UNIT_BIN)
+	@tests/unit/run.sh $(UNIT_BIN)
 clitest: all
 	@tests/cli/run.sh
-
-valgrind: all
+dialects: all
+	@tests/cli/dialects.sh
+manpages: all
+	@tests/cli/manpages.sh
+valgrind: all plugins
 	@tests/valgrind.sh
+disttest: all
+	@tests/dist/run.sh
+faults: all
+	@tests/cli/faults.sh
+# With the example plugins loaded, so that the corpus's plugin seeds reach
+# their parsers and intersections.
+fuzz-replay: $(BUILD)/san/fuzz_replay $(BUILD)/san/fuzz_image_replay plugins
+	@WHITTED_PLUGIN_PATH=$(BUILD)/plugins $(BUILD)/san/fuzz_replay tests/fuzz/corpus tests/errors
+	@$(BUILD)/san/fuzz_image_replay tests/fuzz/images
+threadcheck: all
+	@bench/threadcheck.sh
+features: all plugins
+	@tests/features/run.sh
+portablecheck: all
+	@$(MAKE) --no-print-directory BUILD=$(BUILD)/portable CFLAGS="$(CFLAGS) -DACCEL_PORTABLE" \
+		$(BUILD)/portable/whitted >/dev/null
+	@bench/portablecheck.sh $(BUILD)/whitted $(BUILD)/portable/whitted
+imgcmptest: all
+	@tests/tools/imgcmp-test.sh
+povcheck: all plugins
+	@tests/povcheck.sh
+refcheck: all
+	@python3 tests/reference/random_check.py $(BUILD)/whitted 24 2026 80
+mistakecheck: all
+	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_SHARED_DIR)
+comparetest: all
+	@tests/cli/compare.sh $(BUILD)/whitted
+reportcheck: all
+	@tests/cli/report.sh $(BUILD)/whitted
+viewer-e2e: all plugins
+	@if [ -z "$(VIEWER_HAVE_GL)" ]; then \
+		echo "viewer-e2e: NOT RUN: freeglut3-dev is not installed (make deps)"; exit 1; \
+	fi
+	@tests/viewer/e2e.sh $(BUILD)/whitted-view $(BUILD)/whitted
+install-test: all plugins
+	@tests/cli/install-test.sh
+newshape: all
+	@tests/cli/newshape.sh
+plugintest: all plugins
+	@tests/cli/plugins.sh
 
-check: check-deps
-	@$(MAKE) --no-print-directory all $(TEST_BIN)
-	@for t in $(CHECK_TARGETS); do $(MAKE) --no-print-directory $$t || exit 1; done
+# ---- fuzzing (not part of check) ------------------------------------------
+#   make fuzz   builds the libFuzzer target with clang and runs it for
+#               FUZZ_SECONDS (default 600) on tests/fuzz/corpus and tests/errors
+FUZZ_SECONDS ?= 600
+FUZZ_CC ?= clang
+FUZZ_FLAGS := -std=c99 -g -O1 -Iinclude -Isrc $(PNG_CFLAGS) -pthread \
+	-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -MMD -MP
+$(BUILD)/fuzz/%.o: %.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+$(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/harness.c tests/fuzz/harness.h \
+	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_scene.c \
+		tests/fuzz/harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+$(BUILD)/fuzz/fuzz_image: tests/fuzz/fuzz_image.c tests/fuzz/image_harness.c tests/fuzz/harness.h \
+	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_image.c \
+		tests/fuzz/image_harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+#   make fuzz-images   the same for the image readers of whitted compare, on tests/fuzz/images
+fuzz-images: $(BUILD)/fuzz/fuzz_image
+	@mkdir -p $(BUILD)/fuzz/images $(BUILD)/fuzz/artifacts
+	$(BUILD)/fuzz/fuzz_image -max_total_time=$(FUZZ_SECONDS) -max_len=16384 -timeout=10 \
+		-rss_limit_mb=2048 -artifact_prefix=$(BUILD)/fuzz/artifacts/ -print_final_stats=1 \
+		$(BUILD)/fuzz/images tests/fuzz/images
 
-install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib $(DESTDIR)$(PREFIX)/include/whitted
-	for p in $(INSTALL_PROGRAMS); do install -m 755 $(BUILD)/$$p $(DESTDIR)$(PREFIX)/bin/$$p; done
-	install -m 644 $(BUILD)/libwhitted.a $(DESTDIR)$(PREFIX)/lib/libwhitted.a
-	cp -R include/. $(DESTDIR)$(PREFIX)/include/whitted/
+fuzz: $(BUILD)/fuzz/fuzz_scene plugins
+	@mkdir -p $(BUILD)/fuzz/corpus $(BUILD)/fuzz/artifacts
+	WHITTED_PLUGIN_PATH=$(BUILD)/plugins $(BUILD)/fuzz/fuzz_scene -max_total_time=$(FUZZ_SECONDS) \
+		-dict=tests/fuzz/scene.dict -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+		-artifact_prefix=$(BUILD)/fuzz/artifacts/ -print_final_stats=1 \
+		$(BUILD)/fuzz/corpus tests/fuzz/corpus tests/errors
+
+# ---- the benchmark (not a test; see docs/benchmark.md) ---------------------
+bench: all
+	@scripts/deps.sh $(BENCH_PKGS)
+	@scripts/deps.sh --optional $(BENCH_OPT_PKGS)
+	@if [ -f /usr/include/embree3/rtcore.h ]; then \
+		$(MAKE) --no-print-directory $(BUILD)/whitted-embree $(BUILD)/embree_build; fi
+	@bench/bench.sh
+
+# ---- installing -----------------------------------------------------------
+MAN_PAGES := $(wildcard docs/man/*.1)
+install: all plugins
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+		$(DESTDIR)$(PREFIX)/include/whitted $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 755 $(PROGRAMS:%=$(BUILD)/%) $(DESTDIR)$(PREFIX)/bin/
+	install -m 644 $(BUILD)/libwhitted.a $(DESTDIR)$(PREFIX)/lib/
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' whitted.pc.in \
+		> $(DESTDIR)$(PREFIX)/lib/pkgconfig/whitted.pc
+	install -m 644 include/whitted/*.h $(DESTDIR)$(PREFIX)/include/whitted/
+	$(if $(MAN_PAGES),install -m 644 $(MAN_PAGES) $(DESTDIR)$(PREFIX)/share/man/man1/)
+	install -d $(DESTDIR)$(PREFIX)/lib/whitted/plugins
+	install -m 644 $(PLUGINS) $(DESTDIR)$(PREFIX)/lib/whitted/plugins/
 
 clean:
 	rm -rf $(BUILD) out

@@ -4,6 +4,12 @@
 # object scene is big enough for the hierarchy's build to split its work
 # between threads too; helgrind (when valgrind is installed) then looks
 # for data races in the build, the parse's hashing thread and the render.
+# Every size leaves partial 16x16 blocks at the right and bottom edges
+# (203 = 12 x 16 + 11).  Since images that agree with each other can all
+# be wrong alike, the 203-pixel render is also checked against what does
+# not share the block loop: the independent Python renderer
+# (tests/reference/ref_render.py, imgcmp's gate) and a merge of --region
+# renders cut off the 16-pixel grid (so every block falls elsewhere).
 set -u
 BUILD=${BUILD:-build}
 W=$BUILD/whitted
@@ -12,8 +18,8 @@ trap 'rm -rf "$T"' EXIT
 pass=0 fail=0
 "$BUILD/gen_scene" 300 >"$T/gen.txt"
 "$BUILD/gen_scene" 12000 >"$T/gen12k.txt"
-for case in "scenes/scene.txt -s 97" "$T/gen.txt -s 61" "scenes/scene.txt -s 40 --clamp final" \
-	"$T/gen12k.txt -s 33"; do
+for case in "scenes/scene.txt -s 203" "scenes/scene.txt -s 97" "$T/gen.txt -s 61" \
+	"scenes/scene.txt -s 40 --clamp final" "$T/gen12k.txt -s 33"; do
 	set -- $case
 	for j in 1 2 3 7; do
 		if ! "$W" -q -j $j -o "$T/j$j.ppm" "$@"; then
@@ -31,6 +37,41 @@ for case in "scenes/scene.txt -s 97" "$T/gen.txt -s 61" "scenes/scene.txt -s 40 
 		fi
 	done
 done
+# The 203-pixel course scene with 1 and 7 threads against the reference
+# renderer, and against the merge of nine regions whose edges (5, 101 and
+# 7, 150) lie off the block grid.
+"$W" -q -j 1 -s 203 -o "$T/full1.ppm" scenes/scene.txt &&
+	"$W" -q -j 7 -s 203 -o "$T/full7.ppm" scenes/scene.txt || {
+	echo "threadcheck: whitted failed on scenes/scene.txt -s 203"
+	fail=$((fail + 1))
+}
+if python3 tests/reference/ref_render.py scenes/scene.txt "$T/ref.ppm" --size 203; then
+	for j in 1 7; do
+		if "$BUILD/imgcmp" "$T/full$j.ppm" "$T/ref.ppm" >"$T/cmp.txt" 2>&1; then
+			pass=$((pass + 1))
+		else
+			echo "threadcheck: -j $j at 203 differs from the reference renderer: $(cat "$T/cmp.txt")"
+			fail=$((fail + 1))
+		fi
+	done
+else
+	echo "threadcheck: the reference renderer (python3 tests/reference/ref_render.py) failed"
+	fail=$((fail + 1))
+fi
+n=0
+for y in 0,7 7,150 150,203; do
+	for x in 0,5 5,101 101,203; do
+		n=$((n + 1))
+		"$W" -q -j 3 -s 203 --region "${x%,*},${y%,*},${x#*,},${y#*,}" -o "$T/r$n.png" \
+			scenes/scene.txt || echo "threadcheck: region ${x%,*},${y%,*},${x#*,},${y#*,} failed"
+	done
+done
+if "$W" merge -o "$T/merged.ppm" "$T"/r?.png 2>"$T/merge.err" && cmp -s "$T/merged.ppm" "$T/full1.ppm"; then
+	pass=$((pass + 1))
+else
+	echo "threadcheck: nine regions off the block grid, merged, differ from the full render $(cat "$T/merge.err")"
+	fail=$((fail + 1))
+fi
 # The 12k file (over 1 MiB) is read in parts by several threads, and its
 # tree built by several: helgrind looks for races there, memcheck for
 # leaks and bad reads and writes.

@@ -7,14 +7,20 @@
 
 #include <stdio.h>
 
-#include "camera.h"
-#include "diag.h"
-#include "pov.h"
-#include "scene.h"
+#include "whitted/camera.h"
+#include "whitted/diag.h"
+#include "whitted/pov.h"
+#include "whitted/scene.h"
 
 /* Writes the whole .pov file.  Returns 0, -RT_E_NOMEM or -RT_E_IO. */
 int pov_export_scene(FILE *out, const struct scene *s, const struct camera *cam,
 		     const struct pov_options *opt, struct diag *d);
+
+/* True when the camera has a near plane (whitted sees nothing nearer) and
+ * a shape's bounds reach into the box that holds the space between the eye
+ * and the plane: POV-Ray, which has no near plane, may then show what
+ * whitted does not. */
+bool pov_export_near_hides(const struct scene *s, const struct camera *cam);
 
 /* Writes the .ini that renders pov_name into png_name (both relative to the
  * directory povray runs in) at size x size pixels with linear output. */

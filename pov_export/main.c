@@ -9,14 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
+#include "cli/scene_opts.h"
+#include "cli/tool.h"
 #include "export.h"
-#include "scene.h"
-
-enum {
-	EXIT_SCENE = 1,
-	EXIT_USAGE = 2,
-};
+#include "whitted/image.h"
+#include "whitted/scene.h"
 
 enum {
 	OPT_FINISH = CLI_OPT_FIRST_PRIVATE,
@@ -56,39 +53,56 @@ static void usage(FILE *f)
 		cli_scene_help);
 }
 
-static int usage_error(const char *fmt, const char *arg)
-{
-	fprintf(stderr, "scene2pov: error: ");
-	fprintf(stderr, fmt, arg);
-	fprintf(stderr, "\nTry 'scene2pov --help' for more information.\n");
-	return EXIT_USAGE;
-}
-
-static void print_diag(const struct diag *d, const char *kind)
-{
-	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
-
-	if (d->file[0] == '\0') {
-		fprintf(stderr, "scene2pov: %s: %s\n", kind, d->msg);
-		return;
-	}
-	diag_format(d, "scene2pov", kind, line, sizeof(line));
-	fprintf(stderr, "%s\n", line);
-}
-
-static void print_note(void *ctx, const struct diag *note)
-{
-	const struct options *o = ctx;
-
-	if (!o->scene.quiet)
-		print_diag(note, "note");
-}
-
 static bool ends_with(const char *s, const char *suffix)
 {
 	size_t n = strlen(s), m = strlen(suffix);
 
 	return n >= m && strcmp(s + n - m, suffix) == 0;
+}
+
+/* One of scene2pov's own options: 0, the status to stop with, or -1 when
+ * it is not one. */
+static int pov_option(void *ctx, int c, const char *arg)
+{
+	struct options *o = ctx;
+
+	switch (c) {
+	case 'o':
+		if (arg[0] == '\0')
+			return tool_usage_error("--output: expected a file name, found ''");
+		o->output = arg;
+		return 0;
+	case CLI_OPT_CLAMP:
+		/* POV-Ray clamps only the finished pixel; whitted's default
+		 * clamp at every level has no POV-Ray equivalent. */
+		if (strcmp(arg, "level") == 0)
+			return tool_usage_error("--clamp level cannot be exported: POV-Ray clamps only the finished pixel (--clamp final)");
+		return -1;
+	case CLI_OPT_SAMPLES:
+		/* POV-Ray's own supersampling (+A, method 1 or 2) does not place
+		 * or weigh its samples as whitted's grid does (45 dB apart at 3
+		 * x 3), so nothing in the .ini could honour N > 1. */
+		if (strcmp(arg, "1") == 0)
+			return -1;
+		return tool_usage_error("--samples %s cannot be exported: POV-Ray's antialiasing is not whitted's N x N grid; "
+					"export at --size N*S and reduce the image by N x N box averaging (as povcheck does)",
+					arg);
+	case OPT_FINISH:
+		if (strcmp(arg, "exact") == 0)
+			o->pov.finish = RT_POV_FINISH_EXACT;
+		else if (strcmp(arg, "plain") == 0)
+			o->pov.finish = RT_POV_FINISH_PLAIN;
+		else
+			return tool_usage_error("--finish: expected exact or plain, found '%s'", arg);
+		return 0;
+	case 'h':
+		usage(stdout);
+		exit(0);
+	case 'V':
+		printf("scene2pov %s\n", RT_VERSION);
+		exit(0);
+	}
+	return -1;
 }
 
 static int parse_args(int argc, char **argv, struct options *o)
@@ -102,65 +116,28 @@ static int parse_args(int argc, char **argv, struct options *o)
 		{ NULL, 0, NULL, 0 },
 	};
 	const char *base;
-	struct diag d;
-	int c, rc;
+	int rc;
 
 	memset(o, 0, sizeof(*o));
 	cli_scene_init(&o->scene);
 	o->pov.finish = RT_POV_FINISH_EXACT;
-	opterr = 0;
-	while ((c = getopt_long(argc, argv, CLI_SCENE_SHORT "o:hV", longopts, NULL)) != -1) {
-		diag_clear(&d);
-		/* POV-Ray clamps only the finished pixel; whitted's default
-		 * clamp at every level has no POV-Ray equivalent. */
-		if (c == CLI_OPT_CLAMP && strcmp(optarg, "level") == 0)
-			return usage_error("%s", "--clamp level cannot be exported: POV-Ray clamps only the finished pixel (--clamp final)");
-		rc = cli_scene_option(&o->scene, c, optarg, &d);
-		if (rc < 0)
-			return usage_error("%s", d.msg);
-		if (rc > 0)
-			continue;
-		switch (c) {
-		case 'o':
-			if (optarg[0] == '\0')
-				return usage_error("--output: %s", "expected a file name, found ''");
-			o->output = optarg;
-			break;
-		case OPT_FINISH:
-			if (strcmp(optarg, "exact") == 0)
-				o->pov.finish = RT_POV_FINISH_EXACT;
-			else if (strcmp(optarg, "plain") == 0)
-				o->pov.finish = RT_POV_FINISH_PLAIN;
-			else
-				return usage_error("--finish: expected exact or plain, found '%s'", optarg);
-			break;
-		case 'h':
-			usage(stdout);
-			exit(0);
-		case 'V':
-			printf("scene2pov %s\n", RT_VERSION);
-			exit(0);
-		case ':':
-			return usage_error("option '%s' needs a value", argv[optind - 1]);
-		default:
-			return usage_error("unknown option '%s'", argv[optind - 1]);
-		}
-	}
-	if (cli_scene_operand(&o->scene, argc, argv, optind, &o->scene_path, &d) < 0)
-		return usage_error("%s", d.msg);
+	rc = cli_parse_options(argc, argv, ":" CLI_SCENE_SHORT "o:hV", longopts, &o->scene, pov_option, o);
+	if (rc != 0)
+		return rc;
+	o->scene_path = o->scene.path;
 	if (!o->output) {
 		o->output_owned = cli_default_output(o->scene_path, ".pov");
 		if (!o->output_owned) {
-			fprintf(stderr, "scene2pov: error: out of memory\n");
-			return EXIT_SCENE;
+			fprintf(stderr, "%s: error: out of memory\n", tool_name());
+			return TOOL_EXIT_FAILURE;
 		}
 		o->output = o->output_owned;
 	}
 	if (!ends_with(o->output, ".pov") || ends_with(o->output, "/.pov") || strcmp(o->output, ".pov") == 0)
-		return usage_error("--output: expected a name ending in .pov, found '%s'", o->output);
+		return tool_usage_error("--output: expected a name ending in .pov, found '%s'", o->output);
 	base = strrchr(o->output, '/');
 	if (!pov_export_name_ok(base ? base + 1 : o->output))
-		return usage_error("--output: POV-Ray's .ini cannot name '%s' (a quote or control character)",
+		return tool_usage_error("--output: POV-Ray's .ini cannot name '%s' (a quote or control character)",
 				   o->output);
 	return 0;
 }
@@ -182,11 +159,11 @@ static int write_file(const char *path, const struct writer *w, bool ini, struct
 	if (!f)
 		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	if (ini)
-		rc = pov_export_ini(f, w->pov_base, w->png_base, w->scene->image_size, d);
+		rc = pov_export_ini(f, w->pov_base, w->png_base, scene_image_size(w->scene), d);
 	else
 		rc = pov_export_scene(f, w->scene, w->cam, w->pov, d);
 	if (fclose(f) != 0 && rc == 0)
-		rc = diag_set(d, RT_E_IO, "", 0, 0, "write error: %s", strerror(errno));
+		rc = diag_fail(d, RT_E_IO, "write error: %s", strerror(errno));
 	if (rc < 0) {
 		if (d->file[0] == '\0')
 			snprintf(d->file, sizeof(d->file), "%s", path);
@@ -208,6 +185,58 @@ static char *replace_ext(const char *path, const char *ext)
 	return out;
 }
 
+/* The floor's textures as opaque 24-bit PNGs of the texels whitted
+ * decoded, OUT-floor-white.png and OUT-floor-black.png beside OUT.pov, for
+ * the image_maps to name (pov_options floor_texture): POV-Ray then reads
+ * what whitted reads whatever the input was (an alpha channel, 32-bit or
+ * top-down rows).  Each is written through a temporary file; on failure
+ * those written are removed.  paths[k] and names[k] (the base name) are
+ * set for each texture written, NULL otherwise; free paths[k]. */
+static int write_textures(const struct scene *s, const char *output, char *paths[2],
+			  const char *names[2], struct diag *d)
+{
+	static const char *const suffix[2] = { "-floor-white.png", "-floor-black.png" };
+	int k, rc;
+
+	for (k = 0; k < 2; k++) {
+		const struct image *img = scene_floor_texture(s, k);
+		const char *slash;
+
+		paths[k] = NULL;
+		names[k] = NULL;
+		if (!img)
+			continue;
+		paths[k] = replace_ext(output, suffix[k]);
+		if (!paths[k])
+			rc = diag_fail(d, RT_E_NOMEM, "out of memory");
+		else
+			rc = image_write(img, paths[k], RT_FORMAT_PNG, NULL, d);
+		if (rc < 0) {
+			free(paths[k]);
+			paths[k] = NULL;
+			if (k == 1 && paths[0]) {
+				remove(paths[0]);
+				free(paths[0]);
+				paths[0] = NULL;
+				names[0] = NULL;
+			}
+			return rc;
+		}
+		slash = strrchr(paths[k], '/');
+		names[k] = slash ? slash + 1 : paths[k];
+	}
+	return 0;
+}
+
+static void remove_textures(char *paths[2])
+{
+	int k;
+
+	for (k = 0; k < 2; k++)
+		if (paths[k])
+			remove(paths[k]);
+}
+
 static int run(struct options *o)
 {
 	struct scene *s = NULL;
@@ -217,34 +246,50 @@ static int run(struct options *o)
 	const char *slash = strrchr(o->output, '/');
 	char *ini_path = replace_ext(o->output, ".ini");
 	char *png_base = replace_ext(slash ? slash + 1 : o->output, ".png");
-	int rc, status = EXIT_SCENE;
+	char *tex_paths[2] = { NULL, NULL };
+	int rc, status = TOOL_EXIT_FAILURE;
 
 	diag_clear(&d);
 	if (!ini_path || !png_base) {
-		rc = diag_set(&d, RT_E_NOMEM, "", 0, 0, "out of memory");
+		rc = diag_fail(&d, RT_E_NOMEM, "out of memory");
 		goto out;
 	}
-	rc = cli_scene_load(&o->scene, o->scene_path, print_note, o, &s, &cam, &d);
+	rc = cli_scene_load(&o->scene, o->scene_path, tool_print_note, &o->scene.quiet, &s, &cam, &d);
 	if (rc < 0) {
 		if (rc == -RT_E_INVALID)
-			status = EXIT_USAGE;
+			status = TOOL_EXIT_USAGE;
 		goto out;
 	}
+	if (pov_export_near_hides(s, &cam)) {
+		struct diag note;
+
+		diag_set(&note, RT_OK, o->scene_path ? o->scene_path : "", 0, 0,
+			 "a shape lies partly nearer than the image plane, where whitted sees "
+			 "nothing: POV-Ray's camera has no near plane and may show it");
+		tool_print_note(&o->scene.quiet, &note);
+	}
+	if ((rc = write_textures(s, o->output, tex_paths, o->pov.floor_texture, &d)) < 0)
+		goto out;
 	w.scene = s;
 	w.cam = &cam;
 	w.pov = &o->pov;
 	w.pov_base = slash ? slash + 1 : o->output;
 	w.png_base = png_base;
-	if ((rc = write_file(o->output, &w, false, &d)) < 0)
+	if ((rc = write_file(o->output, &w, false, &d)) < 0) {
+		remove_textures(tex_paths);
 		goto out;
+	}
 	if ((rc = write_file(ini_path, &w, true, &d)) < 0) {
 		remove(o->output);
+		remove_textures(tex_paths);
 		goto out;
 	}
 	status = 0;
 out:
 	if (rc < 0)
-		print_diag(&d, "error");
+		tool_print_diag(&d, "error");
+	free(tex_paths[0]);
+	free(tex_paths[1]);
 	scene_destroy(s);
 	free(ini_path);
 	free(png_base);
@@ -256,6 +301,7 @@ int main(int argc, char **argv)
 	struct options o;
 	int status;
 
+	tool_set_name("scene2pov");
 	status = parse_args(argc, argv, &o);
 	if (status == 0)
 		status = run(&o);

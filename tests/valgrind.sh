@@ -58,7 +58,58 @@ vg "unknown format" 2 -o x.jpg "$ROOT/scenes/scene.txt"
 vg "camera error" 2 --eye 0,0,0 -o out.png "$ROOT/scenes/scene.txt"
 vg "missing output directory" 1 -s 8 -o nodir/x.png "$ROOT/scenes/scene.txt"
 vg "full device" 1 -s 8 -o /dev/full --format png "$ROOT/scenes/scene.txt"
+# The plugins: loaded, their shapes rendered, unloaded at exit; and a
+# load that fails after others were loaded.
+PL=$ROOT/build/plugins
+for p in quad cylinder torus; do
+	vg "plugin $p" 0 -s 20 -j 2 --plugin "$PL/$p.so" -o out.png "$ROOT/scenes/plugins/$p.txt"
+done
+vg "plugin loaded twice, then a missing one" 1 -s 8 --plugin "$PL/quad.so" --plugin "$PL/quad.so" --plugin "$T/nosuch.so" \
+	-o out.png "$ROOT/scenes/plugins/quad.txt"
+for i in $(seq 40); do echo "not an ELF file"; done >"$T/text.so"
+vg "a good plugin, then a file that is no shared object" 1 -s 8 --plugin "$PL/quad.so" --plugin "$T/text.so" \
+	-o out.png "$ROOT/scenes/plugins/quad.txt"
+mkdir -p "$T/pldir" && cp "$PL/quad.so" "$T/pldir/a.so" && cp "$T/text.so" "$T/pldir/b.so"
+WHITTED_PLUGIN_PATH="$T/pldir" vg "WHITTED_PLUGIN_PATH: a good a.so, a stray b.so" 1 -s 8 -o out.png \
+	"$ROOT/scenes/plugins/quad.txt"
+vg "--list-shapes with a missing plugin" 1 --plugin "$PL/torus.so" --list-shapes --plugin "$T/nosuch.so"
 vg "help" 0 --help
+# Issue 14's options: antialiasing, textured floors (and a texture that
+# cannot be read), glass.
+TEX="$ROOT/tests/textures"
+vg "samples 3" 0 -s 12 -j 2 --samples 3 -o out.png "$ROOT/scenes/mirrors.txt"
+vg "floor texture bmp,png" 0 -s 16 -j 2 --floor-texture "$TEX/white.bmp,$TEX/black.png" -o out.png \
+	"$ROOT/scenes/nearfar.txt"
+vg "floor texture missing" 1 -s 16 --floor-texture "$TEX/white.bmp,$T/nosuch.png" -o out.png \
+	"$ROOT/scenes/scene.txt"
+vg "floor texture not an image" 1 -s 16 --floor-texture "$ROOT/scenes/scene.txt" -o out.png \
+	"$ROOT/scenes/scene.txt"
+vg "glass" 0 -s 16 -j 2 -r 5 --glass 1:1.5:0.8,2 -o out.png "$ROOT/scenes/nearfar.txt"
+vg "glass beyond the objects" 2 -s 16 --glass 9 -o out.png "$ROOT/scenes/sphere.txt"
+vg "glass nested" 0 -s 16 -j 2 -r 6 --glass 1:1.5:0.8,2:1.2:0.7 -o out.png \
+	"$ROOT/tests/scenes/glass-nested.txt"
+vg "glass on a triangle (a note)" 0 -s 16 --glass 1 -o out.png "$ROOT/scenes/triangle.txt"
+vg "glass named twice" 2 -s 16 --glass 2,2:1.2 -o out.png "$ROOT/scenes/sphere.txt"
+# scene2pov writing the textures' PNGs, and failing after them (OUT.pov a
+# directory: they are removed).
+for out in out.pov dir.pov; do
+	clean_wd
+	mkdir "$T/wd/dir.pov"
+	(cd "$T/wd" && $VG "$ROOT/build/scene2pov" -q -s 16 \
+		--floor-texture "$TEX/white-xrgb.bmp,$TEX/black-topdown.bmp" -o "$out" \
+		"$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err"
+	rc=$?
+	want=0
+	[ "$out" = dir.pov ] && want=1
+	if [ "$rc" -ne "$want" ] || grep -q '^==[0-9]*==' "$T/err"; then
+		bad "scene2pov textures -o $out" "exit $rc, expected $want"
+		sed 's/^/    /' "$T/err" | head -40
+	elif [ "$want" = 1 ] && [ -n "$(find "$T/wd" -name '*.png')" ]; then
+		bad "scene2pov textures -o $out" "left $(find "$T/wd" -name '*.png')"
+	else
+		ok
+	fi
+done
 
 # The failure paths of the write and of an interrupted render.
 for f in png bmp ppm; do
@@ -72,6 +123,22 @@ for f in png bmp ppm; do
 		ok
 	fi
 done
+# compare and grade: a match, a mistake ranked on a sample (72 pixels: the
+# sample, then the best causes in full), every kind of unreadable input,
+# and a report.
+CI=$T/compare-images
+mkdir -p "$CI"
+"$W" -q -s 72 -o "$CI/ref.ppm" "$ROOT/scenes/scene.txt"
+"$W" -q -s 72 -o "$CI/other.png" "$ROOT/scenes/mirrors.txt"
+python3 "$ROOT/tests/cli/make_images.py" "$CI/ref.ppm" "$CI"
+vg "compare match" 0 compare -q -s 72 -j 2 "$ROOT/scenes/scene.txt" "$CI/bmp24.bmp"
+vg "compare differs, --diff, --json" 3 compare -q -s 72 -j 2 --json --diff d.png "$ROOT/scenes/scene.txt" "$CI/other.png"
+for f in truncated.bmp truncated.ppm truncated-ascii.ppm bad-sample.ppm empty.png text.png rle.bmp; do
+	vg "compare $f" 1 compare -q -s 72 -j 2 "$ROOT/scenes/scene.txt" "$CI/$f"
+done
+vg "compare wrong size" 1 compare -q -s 40 "$ROOT/scenes/scene.txt" "$CI/ascii.ppm"
+vg "grade with a report" 3 grade -q -s 72 -j 2 --scene "$ROOT/scenes/scene.txt" -o r.html --csv r.csv \
+	"$CI/topdown.bmp" "$CI/other.png" "$CI/truncated.bmp"
 clean_wd
 (cd "$T/wd" && exec $VG "$W" -s 1000 -j 2 -o x.png "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err" &
 pid=$!

@@ -26,7 +26,7 @@ int capture_reserve(int *next, char *path, size_t size, struct diag *d)
 		if (errno != EEXIST)
 			return diag_set(d, RT_E_IO, path, 0, 0, "cannot create: %s", strerror(errno));
 	}
-	return diag_set(d, RT_E_IO, "", 0, 0, "no free name capture-N.png left");
+	return diag_fail(d, RT_E_IO, "no free name capture-N.png left");
 }
 
 static void capture_progress(void *ctx, long done, long total)
@@ -51,7 +51,7 @@ static void *capture_main(void *arg)
 }
 
 int capture_start(struct capture *c, const struct scene *s, const struct camera *cam,
-		  const struct render_settings *rs, int threads, const char *path,
+		  const struct render_settings *rs, int samples, int threads, const char *path,
 		  struct diag *d)
 {
 	int rc;
@@ -60,21 +60,19 @@ int capture_start(struct capture *c, const struct scene *s, const struct camera 
 	diag_clear(&c->diag);
 	c->camera = *cam;
 	snprintf(c->path, sizeof(c->path), "%s", path);
-	if ((rc = image_alloc(&c->img, s->image_size, s->image_size, d)) < 0)
+	if ((rc = image_alloc(&c->img, scene_image_size(s), scene_image_size(s), d)) < 0)
 		return rc;
-	c->rows_total = s->image_size;
-	c->job.scene = s;
-	c->job.camera = &c->camera;
+	c->rows_total = scene_image_size(s);
+	render_job_init(&c->job, s, &c->camera, threads);
 	c->job.settings = *rs;
-	c->job.threads = threads;
-	c->job.x1 = c->job.y1 = s->image_size;
+	c->job.samples = samples;
 	c->job.cancel = &c->cancel;
 	c->job.progress = capture_progress;
 	c->job.progress_ctx = c;
 	rc = pthread_create(&c->thread, NULL, capture_main, c);
 	if (rc != 0) {
 		image_free(&c->img);
-		return diag_set(d, RT_E_NOMEM, "", 0, 0, "cannot start a thread: %s", strerror(rc));
+		return diag_fail(d, RT_E_NOMEM, "cannot start a thread: %s", strerror(rc));
 	}
 	c->running = true;
 	return 0;

@@ -9,11 +9,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "camera.h"
-#include "diag.h"
-#include "image.h"
-#include "render.h"
-#include "scene.h"
+#include "whitted/camera.h"
+#include "whitted/diag.h"
+#include "whitted/image.h"
+#include "whitted/render.h"
+#include "whitted/scene.h"
 
 struct capture {
 	pthread_t thread;
@@ -37,7 +37,7 @@ int capture_reserve(int *next, char *path, size_t size, struct diag *d);
 /* Starts tracing scene through camera into the reserved path (a copy of the
  * camera is kept; the scene must live until capture_join). */
 int capture_start(struct capture *c, const struct scene *s, const struct camera *cam,
-		  const struct render_settings *rs, int threads, const char *path,
+		  const struct render_settings *rs, int samples, int threads, const char *path,
 		  struct diag *d);
 /* True once the thread has finished (capture_join will not block). */
 bool capture_finished(const struct capture *c);

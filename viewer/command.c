@@ -1,97 +1,82 @@
 /* The reproducing command of a capture.  Exactness rests on two facts:
- * %.17g prints a double so that strtod reads back the same double, and
- * whitted builds its camera from eye, look and up with the same
- * camera_init that the viewer's capture used on the same numbers. */
+ * settings_format_options prints each double so that strtod reads back
+ * the same double, and whitted builds its camera from eye, look and up
+ * with the same camera_init that the viewer's capture used on the same
+ * numbers.  What the scene file decides (nearfar's near plane and aspect,
+ * its floor) whitted reads from the same file again, so the command
+ * carries no option for it; a dialect forced with --dialect it does. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "base/text.h"
 #include "command.h"
-#include "diag.h"
-
-struct out {
-	char *buf;
-	size_t size, len;
-	bool full;
-};
-
-static void out_printf(struct out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int n;
-
-	if (o->full)
-		return;
-	va_start(ap, fmt);
-	n = vsnprintf(o->buf + o->len, o->size - o->len, fmt, ap);
-	va_end(ap);
-	if (n < 0 || (size_t)n >= o->size - o->len)
-		o->full = true;
-	else
-		o->len += (size_t)n;
-}
-
-static void out_vec3(struct out *o, const char *opt, struct vec3 v)
-{
-	out_printf(o, " %s %.17g,%.17g,%.17g", opt, v.x, v.y, v.z);
-}
+#include "plugin/loader.h"
+#include "whitted/diag.h"
 
 int command_quote(char *buf, size_t size, const char *s)
 {
-	static const char safe[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-				   "0123456789_./+,=:@%-";
-	struct out o = { buf, size, 0, false };
-	const char *p;
+	struct text_buf o;
 
 	if (size == 0)
 		return -RT_E_RANGE;
-	buf[0] = '\0';
-	/* A word starting with '-' would be read as an option. */
-	if (s[0] == '-')
-		out_printf(&o, "./");
-	if (s[0] != '\0' && s[strspn(s, safe)] == '\0') {
-		out_printf(&o, "%s", s);
-		return o.full ? -RT_E_RANGE : 0;
-	}
-	out_printf(&o, "'");
-	for (p = s; *p; p++) {
-		if (*p == '\'')
-			out_printf(&o, "'\\''");
-		else
-			out_printf(&o, "%c", *p);
-	}
-	out_printf(&o, "'");
+	text_init(&o, buf, size);
+	text_shell_word(&o, s);
 	return o.full ? -RT_E_RANGE : 0;
 }
 
-int command_format(char *buf, size_t size, const char *scene_path,
-		   const struct cli_scene *given, const struct camera_params *cam,
-		   int image_size)
+void command_settings(struct settings *out, const struct cli_scene *given,
+		      const struct scene *s, const struct camera_params *cam)
 {
-	struct out o = { buf, size, 0, false };
+	settings_init(out);
+	out->size = scene_image_size(s);
+	out->recursion = scene_recursion(s);
+	out->camera = *cam;
+	out->floor = !given->no_floor;
+	out->floor_width = given->floor_width;
+	out->floor_tile = given->floor_tile;
+	out->floor_mat = given->floor_mat;
+	out->floor_from_view = !given->floor_given;
+	out->dialect = given->read.dialect;
+	out->clamp = given->clamp;
+	out->samples = given->samples;
+	out->floor_texture[0] = given->floor_texture[0];
+	out->floor_texture[1] = given->floor_texture[1];
+	out->glass = given->glass_text;
+	out->floor_texture_hash = scene_floor_texture_hash(s);
+}
+
+int command_format(char *buf, size_t size, const char *scene_path, enum scene_dialect dialect,
+		   const struct settings *s)
+{
+	struct text_buf o;
+	size_t i;
 	int rc;
 
 	if (size == 0)
 		return -RT_E_RANGE;
-	out_printf(&o, "whitted ");
+	text_init(&o, buf, size);
+	text_printf(&o, "whitted ");
 	if (scene_path) {
 		if ((rc = command_quote(buf + o.len, size - o.len, scene_path)) < 0)
 			return rc;
 		o.len += strlen(buf + o.len);
+		/* The file is read again, so a dialect forced on it must be
+		 * forced again: detection could read it otherwise. */
+		if (dialect != RT_DIALECT_AUTO && scene_dialect_name(dialect))
+			text_printf(&o, " --dialect %s", scene_dialect_name(dialect));
 	} else {
-		out_printf(&o, "--test-scene");
+		text_printf(&o, "--test-scene");
 	}
-	out_vec3(&o, "--eye", cam->eye);
-	out_vec3(&o, "--look", cam->look);
-	out_vec3(&o, "--up", cam->up);
-	out_printf(&o, " --fov %.17g --size %d", cam->fov_deg, image_size);
-	if (given->recursion)
-		out_printf(&o, " --recursion %d", given->recursion);
-	if (given->no_floor)
-		out_printf(&o, " --no-floor");
-	else if (given->floor_width != RT_FLOOR_WIDTH || given->floor_tile != RT_FLOOR_TILE)
-		out_printf(&o, " --floor %.17g,%.17g", given->floor_width, given->floor_tile);
-	if (given->clamp == RT_CLAMP_FINAL)
-		out_printf(&o, " --clamp final");
-	return o.full ? -RT_E_RANGE : 0;
+	/* The plugins loaded, the option's or $WHITTED_PLUGIN_PATH's: the
+	 * command must not depend on the environment it is pasted in. */
+	for (i = 0; i < plugin_count() && !o.full; i++) {
+		text_printf(&o, " --plugin ");
+		if ((rc = command_quote(buf + o.len, size - o.len, plugin_at(i)->path)) < 0)
+			return rc;
+		o.len += strlen(buf + o.len);
+	}
+	if (o.full)
+		return -RT_E_RANGE;
+	return settings_format_options(s, buf + o.len, size - o.len);
 }

@@ -1,23 +1,40 @@
 /* Drawing with OpenGL 1.x fixed function.  The projection is glFrustum on
  * the tracer's image plane: at distance 1 in front of the eye it spans
- * [-tan(fov/2), tan(fov/2)] both ways, and GL samples pixel centres as
- * camera_ray does, so a window of N x N pixels shows what an N x N render
- * shows.  Lighting is GL's Phong per vertex with the material's ka, kd, ks
- * and shininess and the scene's lights (no shadows, no reflections): close
- * enough to see the shapes as solid and to aim the camera. */
+ * [-tan(fovx/2), tan(fovx/2)] across and [-tan(fov/2), tan(fov/2)] up
+ * (fovx = aspect * fov with nearfar's aspect, else fov), and GL samples
+ * pixel centres as camera_ray does, so a window of N x N pixels shows what
+ * an N x N render shows; with nearfar's near plane GL's near plane is that
+ * plane, which clips what the tracer's rays start beyond.  Lighting is GL's
+ * Phong per vertex with the material's ka, kd, ks and shininess and the
+ * scene's lights, spotlights as GL spotlights (no shadows, no
+ * reflections): close enough to see the shapes as solid and to aim the
+ * camera.  Every shape is drawn from the mesh its primitive makes
+ * (shape_tessellate), whatever the primitive; one without a tessellate
+ * method is drawn as its bounding box, with a note. */
 #include <GL/gl.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "draw.h"
-#include "mesh.h"
+#include "light_marker.h"
+#include "whitted/mesh.h"
 
-/* Grid resolution for the longest axis of a quadric's box. */
-#define DRAW_QUADRIC_CELLS 64
-/* Floor quads per side: GL lights per vertex, so the floor needs vertices
- * under the highlights; the checker itself comes from the texture. */
-#define DRAW_FLOOR_GRID 96
+/* Primitives noted as drawn without a mesh of their own, per kind of note;
+ * beyond this many, the first ones' notes are enough. */
+#define DRAW_MAX_NOTED 32
+
+/* The implicit floor, when it is unbounded (nearfar's infinite
+ * checkerboard), is meshed in layers: over 8, 64 and 512 times the region
+ * that unbounded file objects get, finely near the scene and coarsely far
+ * away, each nearer layer drawn over the ones further out.  The last
+ * reaches to within a pixel or two of the horizon from a camera as high
+ * above the floor as the scene is wide. */
+static const struct draw_ground_layer {
+	double reach;
+	int segments;
+} draw_ground[] = { { 8.0, 64 }, { 64.0, 24 }, { 512.0, 24 } };
+#define DRAW_GROUND_LAYERS (sizeof(draw_ground) / sizeof(draw_ground[0]))
 
 /* Widens box along one axis to take in [lo, hi]. */
 static void box_include_axis(struct aabb *box, int axis, double lo, double hi)
@@ -29,39 +46,55 @@ static void box_include_axis(struct aabb *box, int axis, double lo, double hi)
 	*max = fmax(*max, hi);
 }
 
+/* A shape that a scene file can name: one of a registered table (a
+ * keyword may have several, one per dialect), so not the implicit floor. */
+static bool is_file_object(const struct shape *sh)
+{
+	const struct shape_ops *const *ops;
+
+	for (ops = shape_ops_all(); *ops; ops++)
+		if (*ops == sh->ops)
+			return true;
+	return false;
+}
+
+/* A shape's part in the scene's box: its bounds, or for an unbounded
+ * shape the axes it is bounded along (a quadric clipped on some axes only
+ * still has a place along them). */
+static void box_include_shape(struct aabb *box, const struct shape *sh)
+{
+	struct aabb b;
+	int axis;
+
+	if (shape_bounds(sh, &b)) {
+		*box = aabb_union(*box, b);
+		return;
+	}
+	for (axis = 0; axis < 3; axis++) {
+		double lo = vec3_component(b.min, axis), hi = vec3_component(b.max, axis);
+		if (isfinite(lo) && isfinite(hi))
+			box_include_axis(box, axis, lo, hi);
+	}
+}
+
 struct aabb draw_scene_box(const struct scene *s)
 {
 	struct aabb box = { { INFINITY, INFINITY, INFINITY }, { -INFINITY, -INFINITY, -INFINITY } };
-	struct shape_geometry g;
 	double size;
 	size_t i;
 	int axis;
 
-	for (i = 0; i < s->n_shapes; i++) {
-		struct aabb b;
-		shape_geometry(s->shapes[i], &g);
-		if (g.kind == RT_SHAPE_FLOOR)
-			continue;
-		if (shape_bounds(s->shapes[i], &b)) {
-			box = aabb_union(box, b);
-		} else if (g.kind == RT_SHAPE_QUADRIC) {
-			/* A quadric clipped on some axes still has a place
-			 * along them. */
-			for (axis = 0; axis < 3; axis++)
-				if (g.u.quadric.clipped[axis])
-					box_include_axis(&box, axis, vec3_component(g.u.quadric.lo, axis),
-							 vec3_component(g.u.quadric.hi, axis));
-		}
-	}
-	for (i = 0; i < s->n_lights; i++) {
-		struct aabb b = { s->lights[i].pos, s->lights[i].pos };
+	for (i = 0; i < scene_shape_count(s); i++)
+		if (is_file_object(scene_shape(s, i)))
+			box_include_shape(&box, scene_shape(s, i));
+	for (i = 0; i < scene_light_count(s); i++) {
+		struct aabb b = { scene_light(s, i)->pos, scene_light(s, i)->pos };
 		box = aabb_union(box, b);
 	}
 	if (!(box.min.x <= box.max.x)) {
 		box.min = vec3_make(-100, -100, -100);
 		box.max = vec3_make(100, 100, 100);
 	}
-	/* A flat box (one light, coplanar triangles) still needs a size. */
 	/* A box flat or empty along an axis (one light, coplanar triangles, a
 	 * quadric clipped on one axis only) still needs a size there. */
 	for (axis = 0; axis < 3; axis++) {
@@ -78,10 +111,15 @@ struct aabb draw_scene_box(const struct scene *s)
 	return box;
 }
 
+/* Glass is drawn approximately: see-through by 1 - kt (alpha blending
+ * over what was drawn before it, no bending). */
 static void set_material(const struct material *m, struct color c)
 {
-	GLfloat amb[4] = { (GLfloat)(m->ka * c.r), (GLfloat)(m->ka * c.g), (GLfloat)(m->ka * c.b), 1 };
-	GLfloat dif[4] = { (GLfloat)(m->kd * c.r), (GLfloat)(m->kd * c.g), (GLfloat)(m->kd * c.b), 1 };
+	GLfloat alpha = (GLfloat)(1.0 - m->kt);
+	GLfloat amb[4] = { (GLfloat)(m->ka * c.r), (GLfloat)(m->ka * c.g), (GLfloat)(m->ka * c.b),
+			   alpha };
+	GLfloat dif[4] = { (GLfloat)(m->kd * c.r), (GLfloat)(m->kd * c.g), (GLfloat)(m->kd * c.b),
+			   alpha };
 	/* The format tints the highlight with the object's colour. */
 	GLfloat spe[4] = { (GLfloat)(m->ks * c.r), (GLfloat)(m->ks * c.g), (GLfloat)(m->ks * c.b), 1 };
 	GLfloat shine = (GLfloat)fmin(128.0, m->shininess);
@@ -92,183 +130,222 @@ static void set_material(const struct material *m, struct color c)
 	glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, shine);
 }
 
-static void emit_mesh(const struct mesh *m)
+/* The mesh's texture, for the triangles that follow: nearest texels,
+ * repeated, modulating the lit colour of a white material (which is the
+ * material in the texel's colour: the format's highlight is tinted too). */
+static void set_texture(const struct material *m, const struct mesh_texture *t, unsigned tex)
 {
-	size_t i;
-
-	glBegin(GL_TRIANGLES);
-	for (i = 0; i < m->n_vertices; i++) {
-		const float *v = m->data + i * RT_MESH_FLOATS_PER_VERTEX;
-		glNormal3fv(v + 3);
-		glVertex3fv(v);
-	}
-	glEnd();
-}
-
-static void emit_triangle(const struct shape_geometry *g)
-{
-	const struct vec3 *v = g->u.triangle.v;
-	struct vec3 n = vec3_normalize(vec3_cross(vec3_sub(v[1], v[0]), vec3_sub(v[2], v[0])));
+	GLfloat texels[RT_MESH_TEXELS_MAX][3];
 	int k;
 
-	glBegin(GL_TRIANGLES);
-	glNormal3d(n.x, n.y, n.z);
-	for (k = 0; k < 3; k++)
-		glVertex3d(v[k].x, v[k].y, v[k].z);
-	glEnd();
-}
-
-/* The floor's tile (i, j) is white when i + j is even: a 2 x 2 texture
- * repeated every two tiles, sampled without filtering. */
-static unsigned make_floor_texture(void)
-{
-	static const GLubyte texels[2][2][3] = {
-		{ { 255, 255, 255 }, { 0, 0, 0 } },
-		{ { 0, 0, 0 }, { 255, 255, 255 } },
-	};
-	GLuint tex;
-
-	glGenTextures(1, &tex);
+	for (k = 0; k < t->width * t->height; k++) {
+		texels[k][0] = (GLfloat)t->texels[k].r;
+		texels[k][1] = (GLfloat)t->texels[k].g;
+		texels[k][2] = (GLfloat)t->texels[k].b;
+	}
+	set_material(m, color_make(1, 1, 1));
+	glEnable(GL_TEXTURE_2D);
 	glBindTexture(GL_TEXTURE_2D, tex);
 	glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
 	glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
 	glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 	glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
 	glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-	glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_BYTE, texels);
-	return tex;
+	glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, t->width, t->height, 0, GL_RGB, GL_FLOAT, texels);
+	glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
 }
 
-static void emit_floor(const struct shape_geometry *g, unsigned tex)
+/* The texture is specified inside the display list, so each textured mesh
+ * brings its own texels to the one texture object. */
+static void emit_mesh(const struct shape *sh, const struct mesh *m, struct draw *dr)
 {
-	double half = 0.5 * g->u.floor.width, period = 2.0 * g->u.floor.tile;
-	double cell = g->u.floor.width / DRAW_FLOOR_GRID;
-	int i, j;
+	bool textured = m->texture.width > 0;
+	size_t i;
 
-	glEnable(GL_TEXTURE_2D);
-	glBindTexture(GL_TEXTURE_2D, tex);
-	glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-	glNormal3d(0, 0, 1);
-	glBegin(GL_QUADS);
-	for (j = 0; j < DRAW_FLOOR_GRID; j++) {
-		for (i = 0; i < DRAW_FLOOR_GRID; i++) {
-			static const int corner[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-			int k;
-			for (k = 0; k < 4; k++) {
-				double x = -half + (i + corner[k][0]) * cell;
-				double y = -half + (j + corner[k][1]) * cell;
-				/* Texture coordinates count tile pairs from the
-				 * floor's corner, as the tile index does. */
-				glTexCoord2d((x + half) / period, (y + half) / period);
-				glVertex3d(x, y, 0.0);
-			}
-		}
+	if (textured) {
+		if (!dr->texture)
+			glGenTextures(1, &dr->texture);
+		set_texture(&sh->mat, &m->texture, dr->texture);
+	} else {
+		set_material(&sh->mat, sh->mat.color);
+	}
+	glBegin(GL_TRIANGLES);
+	for (i = 0; i < m->n_vertices; i++) {
+		const float *v = m->data + i * RT_MESH_FLOATS_PER_VERTEX;
+		if (textured)
+			glTexCoord2fv(v + 6);
+		glNormal3fv(v + 3);
+		glVertex3fv(v);
 	}
 	glEnd();
-	glDisable(GL_TEXTURE_2D);
+	if (textured)
+		glDisable(GL_TEXTURE_2D);
 }
 
-/* Cells per axis in proportion to the box, at least 4 on each. */
-static void quadric_cells(struct aabb box, int cells[3])
-{
-	struct vec3 e = vec3_sub(box.max, box.min);
-	double longest = fmax(e.x, fmax(e.y, e.z));
-	int axis;
+/* The notes on shapes drawn without a mesh of their own: one per
+ * primitive, for its bounded shapes and for its unbounded ones. */
+struct draw_notes {
+	diag_note_fn *note;
+	void *ctx;
+	const struct shape_ops *seen[2][DRAW_MAX_NOTED];
+	int n_seen[2];
+};
 
-	for (axis = 0; axis < 3; axis++) {
-		double n = ceil(DRAW_QUADRIC_CELLS * vec3_component(e, axis) / longest);
-		cells[axis] = n < 4 ? 4 : (int)n;
+static void note_no_mesh(struct draw_notes *dn, const struct shape *sh, bool bounded)
+{
+	struct diag n;
+	int k;
+
+	if (!dn->note || dn->n_seen[bounded] == DRAW_MAX_NOTED)
+		return;
+	for (k = 0; k < dn->n_seen[bounded]; k++)
+		if (dn->seen[bounded][k] == sh->ops)
+			return;
+	dn->seen[bounded][dn->n_seen[bounded]++] = sh->ops;
+	if (bounded)
+		diag_fail(&n, RT_OK, "each '%s' is drawn as its bounding box"
+			  " (its primitive has no tessellate method)", sh->ops->keyword);
+	else
+		diag_fail(&n, RT_OK, "the unbounded '%s' objects are not drawn"
+			  " (their primitive has no tessellate method)", sh->ops->keyword);
+	dn->note(dn->ctx, &n);
+}
+
+/* Curved shapes get fewer facets when there are many shapes. */
+static int draw_segments(size_t n_shapes)
+{
+	return n_shapes > 20000 ? 8 : n_shapes > 2000 ? 12 : 32;
+}
+
+/* Widens box to take in the mesh's vertices. */
+static void box_include_mesh(struct aabb *box, const struct mesh *m)
+{
+	size_t i;
+
+	for (i = 0; i < m->n_vertices; i++) {
+		const float *v = m->data + i * RT_MESH_FLOATS_PER_VERTEX;
+		struct aabb p = { { v[0], v[1], v[2] }, { v[0], v[1], v[2] } };
+		*box = aabb_union(*box, p);
 	}
 }
 
-/* Spheres get fewer facets when there are many of them. */
-static void sphere_facets(size_t n_shapes, int *slices, int *stacks)
+/* m is scratch space, kept from shape to shape.  What is drawn widens
+ * dr->world, which the far plane is sized by. */
+static int emit_shape(const struct shape *sh, const struct mesh_options *opt, struct mesh *m,
+		      struct draw *dr, struct draw_notes *dn, struct diag *d)
 {
-	*slices = n_shapes > 20000 ? 8 : n_shapes > 2000 ? 12 : 32;
-	*stacks = *slices / 2;
-}
+	struct aabb b;
+	int rc;
 
-static int emit_shape(const struct shape *sh, const struct shape_geometry *g,
-		      struct aabb around, size_t n_shapes, struct draw *dr, struct diag *d)
-{
-	struct mesh m;
-	int cells[3], slices, stacks, rc = 0;
-
-	mesh_init(&m);
-	switch (g->kind) {
-	case RT_SHAPE_SPHERE:
-		set_material(&sh->mat, sh->mat.color);
-		sphere_facets(n_shapes, &slices, &stacks);
-		rc = mesh_sphere(&m, g->u.sphere.centre, g->u.sphere.radius, slices, stacks);
-		break;
-	case RT_SHAPE_TRIANGLE:
-		set_material(&sh->mat, sh->mat.color);
-		emit_triangle(g);
-		break;
-	case RT_SHAPE_QUADRIC: {
-		struct aabb box = mesh_quadric_region(g, around);
-		set_material(&sh->mat, sh->mat.color);
-		quadric_cells(box, cells);
-		rc = mesh_quadric(&m, g->u.quadric.coef, box, cells);
-		break;
-	}
-	case RT_SHAPE_FLOOR:
-		/* White material; the texture turns half the tiles black. */
-		set_material(&sh->mat, color_make(1, 1, 1));
-		if (!dr->floor_texture)
-			dr->floor_texture = make_floor_texture();
-		emit_floor(g, dr->floor_texture);
-		break;
-	case RT_SHAPE_OTHER:
-		break;
-	}
-	if (rc == 0 && m.n_vertices)
-		emit_mesh(&m);
-	mesh_free(&m);
+	if (!shape_tessellates(sh))
+		note_no_mesh(dn, sh, shape_bounds(sh, &b));
+	mesh_clear(m);
 	/* The meshes can fail only for memory. */
-	if (rc < 0)
-		return diag_set(d, RT_E_NOMEM, "", 0, 0, "out of memory for the shapes' meshes");
+	if ((rc = shape_tessellate(sh, opt, m)) < 0)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the shapes' meshes");
+	if (m->n_vertices) {
+		emit_mesh(sh, m, dr);
+		box_include_mesh(&dr->world, m);
+	}
 	return 0;
 }
 
-int draw_init(struct draw *dr, const struct scene *s, scene_note_fn *note, void *note_ctx,
+/* The region of the unbounded file objects: a cube around the objects and
+ * lights, half again as wide as the box's longest side (a surface runs on
+ * past the scene, and a cone or hyperboloid spreads), or reach times
+ * that. */
+static struct aabb draw_region(struct aabb box, double reach)
+{
+	struct vec3 e = vec3_sub(box.max, box.min);
+	struct vec3 half = vec3_scale(vec3_make(1, 1, 1), reach * 0.75 * fmax(e.x, fmax(e.y, e.z)));
+	struct aabb r;
+
+	r.min = vec3_sub(aabb_centre(box), half);
+	r.max = vec3_add(aabb_centre(box), half);
+	return r;
+}
+
+/* The implicit floor when it is unbounded: the layers of draw_ground,
+ * each further one pushed back in depth (glPolygonOffset) so that where
+ * they overlap the finer nearer one is seen, without z-fighting. */
+static int emit_ground(const struct shape *sh, struct aabb box, struct mesh *m, struct draw *dr,
+		       struct draw_notes *dn, struct diag *d)
+{
+	struct mesh_options opt;
+	size_t k;
+	int rc = 0;
+
+	for (k = 0; k < DRAW_GROUND_LAYERS && rc == 0; k++) {
+		opt.around = draw_region(box, draw_ground[k].reach);
+		opt.segments = draw_ground[k].segments;
+		if (k > 0) {
+			glEnable(GL_POLYGON_OFFSET_FILL);
+			glPolygonOffset((GLfloat)k, (GLfloat)(4 * k));
+		}
+		rc = emit_shape(sh, &opt, m, dr, dn, d);
+	}
+	glPolygonOffset(0.0f, 0.0f);
+	glDisable(GL_POLYGON_OFFSET_FILL);
+	return rc;
+}
+
+int draw_init(struct draw *dr, const struct scene *s, diag_note_fn *note, void *note_ctx,
 	      struct diag *d)
 {
-	struct aabb box = draw_scene_box(s), around;
-	struct vec3 e = vec3_sub(box.max, box.min), half;
+	struct aabb box = draw_scene_box(s);
+	struct draw_notes dn;
+	struct mesh_options opt;
+	struct mesh m;
 	GLint max_lights = 8;
 	size_t i;
 	int rc = 0;
 
 	memset(dr, 0, sizeof(*dr));
-	/* Unclipped quadrics are drawn in a cube around the objects and
-	 * lights, half again as wide as the box's longest side: a surface
-	 * runs on past the scene, and a cone or hyperboloid spreads. */
-	half = vec3_scale(vec3_make(1, 1, 1), 0.75 * fmax(e.x, fmax(e.y, e.z)));
-	around.min = vec3_sub(aabb_centre(box), half);
-	around.max = vec3_add(aabb_centre(box), half);
-	dr->world = around;
-	for (i = 0; i < s->n_shapes; i++) {
-		struct aabb b;
-		if (shape_bounds(s->shapes[i], &b))
-			dr->world = aabb_union(dr->world, b);
-	}
+	memset(&dn, 0, sizeof(dn));
+	dn.note = note;
+	dn.ctx = note_ctx;
+	opt.around = draw_region(box, 1.0);
+	opt.segments = draw_segments(scene_shape_count(s));
+	dr->world = box;
+	/* A spotlight's cone is a tenth of the scene across. */
+	dr->marker_length = 0.1 * vec3_length(vec3_sub(box.max, box.min));
 	glGetIntegerv(GL_MAX_LIGHTS, &max_lights);
-	dr->n_lights = s->n_lights < (size_t)max_lights ? (int)s->n_lights : max_lights;
-	if (note && s->n_lights > (size_t)max_lights) {
+	dr->n_lights = scene_light_count(s) < (size_t)max_lights ? (int)scene_light_count(s) : max_lights;
+	if (note && scene_light_count(s) > (size_t)max_lights) {
 		struct diag n;
-		diag_set(&n, RT_OK, "", 0, 0, "OpenGL lights the view with the first %d of the %zu lights"
-			 " (the captures use them all)", max_lights, s->n_lights);
+		diag_fail(&n, RT_OK, "OpenGL lights the view with the first %d of the %zu lights"
+			 " (the captures use them all)", max_lights, scene_light_count(s));
 		note(note_ctx, &n);
 	}
+	mesh_init(&m);
 	dr->list = glGenLists(1);
 	glNewList(dr->list, GL_COMPILE);
-	for (i = 0; i < s->n_shapes && rc == 0; i++) {
-		struct shape_geometry g;
-		shape_geometry(s->shapes[i], &g);
-		rc = emit_shape(s->shapes[i], &g, around, s->n_shapes, dr, d);
+	for (i = 0; i < scene_shape_count(s) && rc == 0; i++) {
+		const struct shape *sh = scene_shape(s, i);
+		struct aabb b;
+
+		if (sh->mat.kt > 0.0)
+			continue;
+		/* The implicit floor is the ground the camera flies over: when
+		 * it is unbounded it reaches to the horizon (a finite one is
+		 * meshed over its own square). */
+		if (!is_file_object(sh) && !shape_bounds(sh, &b))
+			rc = emit_ground(sh, box, &m, dr, &dn, d);
+		else
+			rc = emit_shape(sh, &opt, &m, dr, &dn, d);
 	}
+	/* Glass last, blended over the opaque shapes, and not hiding what
+	 * lies behind it (no depth writes). */
+	glEnable(GL_BLEND);
+	glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+	glDepthMask(GL_FALSE);
+	for (i = 0; i < scene_shape_count(s) && rc == 0; i++)
+		if (scene_shape(s, i)->mat.kt > 0.0)
+			rc = emit_shape(scene_shape(s, i), &opt, &m, dr, &dn, d);
+	glDepthMask(GL_TRUE);
+	glDisable(GL_BLEND);
 	glEndList();
+	mesh_free(&m);
 	return rc;
 }
 
@@ -278,7 +355,7 @@ static void set_view(const struct fly_camera *cam, const struct draw *dr)
 	struct vec3 f = cam->forward, u = cam->up, r = fly_camera_right(cam), e = cam->eye;
 	struct vec3 centre = aabb_centre(dr->world);
 	double radius = 0.5 * vec3_length(vec3_sub(dr->world.max, dr->world.min));
-	double far = vec3_length(vec3_sub(e, centre)) + radius, near, h;
+	double far = vec3_length(vec3_sub(e, centre)) + radius, near, h, w;
 	/* Rows of the view matrix are right, up and -forward: GL looks down
 	 * its -z axis.  Column-major for glLoadMatrixd. */
 	const GLdouble view[16] = {
@@ -289,18 +366,25 @@ static void set_view(const struct fly_camera *cam, const struct draw *dr)
 	};
 
 	far *= 1.01;
-	/* 24-bit depth keeps about four decades between the planes. */
-	near = far * 1e-4;
+	/* nearfar's image plane, which clips as GL's near plane does (but
+	 * for a plane so near that 24-bit depth would blur the scene: six
+	 * decades before the far plane at most); otherwise about four
+	 * decades before the far plane. */
+	near = cam->near > 0.0 ? fmax(cam->near, far * 1e-6) : far * 1e-4;
+	far = fmax(far, 2.0 * near);
 	h = tan(cam->fov_deg * pi / 360.0) * near;
+	w = cam->aspect > 0.0 ? tan(cam->aspect * cam->fov_deg * pi / 360.0) * near : h;
 	glMatrixMode(GL_PROJECTION);
 	glLoadIdentity();
-	glFrustum(-h, h, -h, h, near, far);
+	glFrustum(-w, w, -h, h, near, far);
 	glMatrixMode(GL_MODELVIEW);
 	glLoadMatrixd(view);
 }
 
-/* Positions are set under the view matrix, so GL keeps them in world
- * space. */
+/* Positions and spot directions are set under the view matrix, so GL
+ * keeps them in world space.  A spotlight's hard edge is lit per vertex,
+ * and its falloff (as any light's) is GL's quadratic attenuation: close,
+ * not exact. */
 static void set_lights(const struct draw *dr, const struct scene *s)
 {
 	static const GLfloat black[4] = { 0, 0, 0, 1 };
@@ -311,7 +395,7 @@ static void set_lights(const struct draw *dr, const struct scene *s)
 	glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
 	glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
 	for (i = 0; i < dr->n_lights; i++) {
-		const struct light *l = &s->lights[i];
+		const struct light *l = scene_light(s, i);
 		GLfloat pos[4] = { (GLfloat)l->pos.x, (GLfloat)l->pos.y, (GLfloat)l->pos.z, 1 };
 		GLfloat col[4] = { (GLfloat)l->color.r, (GLfloat)l->color.g, (GLfloat)l->color.b, 1 };
 		glEnable(GL_LIGHT0 + i);
@@ -319,20 +403,59 @@ static void set_lights(const struct draw *dr, const struct scene *s)
 		glLightfv(GL_LIGHT0 + i, GL_AMBIENT, black);
 		glLightfv(GL_LIGHT0 + i, GL_DIFFUSE, col);
 		glLightfv(GL_LIGHT0 + i, GL_SPECULAR, col);
+		glLightf(GL_LIGHT0 + i, GL_CONSTANT_ATTENUATION, 1.0f);
+		glLightf(GL_LIGHT0 + i, GL_LINEAR_ATTENUATION, 0.0f);
+		glLightf(GL_LIGHT0 + i, GL_QUADRATIC_ATTENUATION,
+			 (GLfloat)light_marker_gl_quadratic(l));
+		glLightf(GL_LIGHT0 + i, GL_SPOT_CUTOFF, (GLfloat)light_marker_gl_cutoff(l));
+		glLightf(GL_LIGHT0 + i, GL_SPOT_EXPONENT, 0.0f);
+		if (l->spot) {
+			GLfloat dir[3] = { (GLfloat)l->axis.x, (GLfloat)l->axis.y,
+					   (GLfloat)l->axis.z };
+			glLightfv(GL_LIGHT0 + i, GL_SPOT_DIRECTION, dir);
+		}
 	}
 }
 
-static void draw_lights(const struct scene *s)
+static void draw_vertex(struct vec3 p)
+{
+	glVertex3d(p.x, p.y, p.z);
+}
+
+/* Each light as a dot in its colour; a spotlight also as a cone of lines
+ * along its axis, opening at its cutoff. */
+static void draw_lights(const struct draw *dr, const struct scene *s)
 {
 	size_t i;
+	int k;
 
 	glDisable(GL_LIGHTING);
 	glPointSize(9.0f);
 	glBegin(GL_POINTS);
-	for (i = 0; i < s->n_lights; i++) {
-		const struct light *l = &s->lights[i];
+	for (i = 0; i < scene_light_count(s); i++) {
+		const struct light *l = scene_light(s, i);
 		glColor3d(l->color.r, l->color.g, l->color.b);
-		glVertex3d(l->pos.x, l->pos.y, l->pos.z);
+		draw_vertex(l->pos);
+	}
+	glEnd();
+	glLineWidth(1.5f);
+	glBegin(GL_LINES);
+	for (i = 0; i < scene_light_count(s); i++) {
+		const struct light *l = scene_light(s, i);
+		struct light_marker mk;
+
+		light_marker_make(l, dr->marker_length, &mk);
+		if (!mk.n_rim)
+			continue;
+		glColor3d(l->color.r, l->color.g, l->color.b);
+		draw_vertex(mk.apex);
+		draw_vertex(mk.tip);
+		for (k = 0; k < mk.n_rim; k++) {
+			draw_vertex(mk.apex);
+			draw_vertex(mk.rim[k]);
+			draw_vertex(mk.rim[k]);
+			draw_vertex(mk.rim[(k + 1) % mk.n_rim]);
+		}
 	}
 	glEnd();
 }
@@ -349,5 +472,5 @@ void draw_frame(const struct draw *dr, const struct scene *s, const struct fly_c
 	set_lights(dr, s);
 	glEnable(GL_LIGHTING);
 	glCallList(dr->list);
-	draw_lights(s);
+	draw_lights(dr, s);
 }

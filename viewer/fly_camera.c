@@ -19,6 +19,8 @@ int fly_camera_init(struct fly_camera *c, const struct camera_params *p, struct 
 	c->forward = cam.forward;
 	c->up = cam.up;
 	c->fov_deg = p->fov_deg;
+	c->near = p->near;
+	c->aspect = p->aspect;
 	fly_camera_orthonormalize(c);
 	return 0;
 }
@@ -86,4 +88,6 @@ void fly_camera_params(const struct fly_camera *c, struct camera_params *out)
 	out->look = vec3_add_scaled(c->eye, c->forward, dist);
 	out->up = c->up;
 	out->fov_deg = c->fov_deg;
+	out->near = c->near;
+	out->aspect = c->aspect;
 }

@@ -1,16 +1,21 @@
 /* The viewer's free-flying camera: an eye and an orthonormal frame that the
- * keys move and turn, and the whitted camera parameters that rebuild it. */
+ * keys move and turn, the lens that the keys leave alone (the field of
+ * view, and nearfar's near plane and aspect), and the whitted camera
+ * parameters that rebuild it. */
 #ifndef RT_FLY_CAMERA_H
 #define RT_FLY_CAMERA_H
 
-#include "camera.h"
-#include "diag.h"
-#include "vec3.h"
+#include "whitted/camera.h"
+#include "whitted/diag.h"
+#include "whitted/vec3.h"
 
 struct fly_camera {
 	struct vec3 eye;
 	struct vec3 forward, up;	/* unit and perpendicular */
 	double fov_deg;			/* vertical */
+	double near;			/* the image plane's distance; 0: none (camera_params) */
+	double aspect;			/* 0: the horizontal view is fov_deg, else
+					 * aspect * fov_deg */
 };
 
 /* The frame of whitted's camera for p (the same checks as camera_init). */
@@ -30,8 +35,8 @@ void fly_camera_roll(struct fly_camera *c, double angle);
 void fly_camera_orthonormalize(struct fly_camera *c);
 
 /* Parameters for whitted: look = eye + forward * max(1, |eye|), up = the
- * frame's up.
- * camera_init on them gives the camera the viewer shows. */
+ * frame's up, and fov_deg, near and aspect as fly_camera_init was given
+ * them.  camera_init on them gives the camera the viewer shows. */
 void fly_camera_params(const struct fly_camera *c, struct camera_params *out);
 
 #endif

@@ -14,17 +14,13 @@
 #include <string.h>
 
 #include "capture.h"
-#include "cli.h"
+#include "cli/scene_opts.h"
 #include "command.h"
 #include "draw.h"
+#include "cli/tool.h"
 #include "fly_camera.h"
-#include "render.h"
-#include "scene.h"
-
-enum {
-	EXIT_SCENE = 1,
-	EXIT_USAGE = 2,
-};
+#include "whitted/render.h"
+#include "whitted/scene.h"
 
 #define VIEW_WINDOW_SIZE 500
 #define VIEW_POLL_MS 100
@@ -64,27 +60,29 @@ static void usage(FILE *f)
 		cli_scene_help, cli_default_threads());
 }
 
-static int usage_error(const char *fmt, const char *arg)
-{
-	fprintf(stderr, "whitted-view: error: ");
-	fprintf(stderr, fmt, arg);
-	fprintf(stderr, "\nTry 'whitted-view --help' for more information.\n");
-	return EXIT_USAGE;
-}
-
-static void print_diag(const struct diag *d, const char *kind)
-{
-	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
-
-	diag_format(d, "whitted-view", kind, line, sizeof(line));
-	fprintf(stderr, "%s\n", line);
-}
-
-static void print_note(void *ctx, const struct diag *note)
+/* One of the viewer's own options: 0, the status to stop with, or -1. */
+static int viewer_option(void *ctx, int c, const char *arg)
 {
 	(void)ctx;
-	if (!v.opts.quiet)
-		print_diag(note, "note");
+	switch (c) {
+	case 'j': {
+		struct diag d;
+		long n;
+
+		diag_clear(&d);
+		if (number_parse_long("--threads", arg, 1, 64, &n, &d) < 0)
+			return tool_usage_error("%s", d.msg);
+		v.threads = v.opts.read.threads = (int)n;
+		return 0;
+	}
+	case 'h':
+		usage(stdout);
+		exit(0);
+	case 'V':
+		printf("whitted-view %s\n", RT_VERSION);
+		exit(0);
+	}
+	return -1;
 }
 
 static int parse_args(int argc, char **argv)
@@ -96,40 +94,15 @@ static int parse_args(int argc, char **argv)
 		{ "version", no_argument, NULL, 'V' },
 		{ NULL, 0, NULL, 0 },
 	};
-	struct diag d;
-	long n;
-	int c, rc;
+	int rc;
 
 	cli_scene_init(&v.opts);
 	v.threads = cli_default_threads();
-	opterr = 0;
-	while ((c = getopt_long(argc, argv, CLI_SCENE_SHORT "j:hV", longopts, NULL)) != -1) {
-		diag_clear(&d);
-		rc = cli_scene_option(&v.opts, c, optarg, &d);
-		if (rc < 0)
-			return usage_error("%s", d.msg);
-		if (rc > 0)
-			continue;
-		switch (c) {
-		case 'j':
-			if (cli_parse_long("--threads", optarg, 1, 64, &n, &d) < 0)
-				return usage_error("%s", d.msg);
-			v.threads = v.opts.read.threads = (int)n;
-			break;
-		case 'h':
-			usage(stdout);
-			exit(0);
-		case 'V':
-			printf("whitted-view %s\n", RT_VERSION);
-			exit(0);
-		case ':':
-			return usage_error("option '%s' needs a value", argv[optind - 1]);
-		default:
-			return usage_error("unknown option '%s'", argv[optind - 1]);
-		}
-	}
-	if (cli_scene_operand(&v.opts, argc, argv, optind, &v.scene_path, &d) < 0)
-		return usage_error("%s", d.msg);
+	rc = cli_parse_options(argc, argv, ":" CLI_SCENE_SHORT "j:hV", longopts, &v.opts,
+			       viewer_option, NULL);
+	if (rc != 0)
+		return rc;
+	v.scene_path = v.opts.path;
 	if (v.opts.test_scene) {
 		snprintf(v.scene_name, sizeof(v.scene_name), "test scene");
 		return 0;
@@ -137,7 +110,7 @@ static int parse_args(int argc, char **argv)
 	/* The capture's command names the file; standard input cannot be
 	 * read a second time. */
 	if (strcmp(v.scene_path, "-") == 0)
-		return usage_error("%s", "SCENE must be a file, not '-'");
+		return tool_usage_error("%s", "SCENE must be a file, not '-'");
 	snprintf(v.scene_name, sizeof(v.scene_name), "%s",
 		 strrchr(v.scene_path, '/') ? strrchr(v.scene_path, '/') + 1 : v.scene_path);
 	return 0;
@@ -205,7 +178,7 @@ static void on_poll(int value)
 	}
 	diag_clear(&d);
 	if (capture_join(&v.capture, &d) < 0) {
-		print_diag(&d, "error");
+		tool_print_diag(&d, "error");
 		set_title(NULL);
 		return;
 	}
@@ -218,9 +191,11 @@ static void start_capture(void)
 {
 	struct camera_params p;
 	struct render_settings rs;
+	struct settings set;
 	struct camera cam;
 	char path[64];
 	struct diag d;
+	int rc;
 
 	if (v.capture.running) {
 		fprintf(stderr, "whitted-view: still tracing %s (%d%%)\n", v.capture.path,
@@ -229,20 +204,29 @@ static void start_capture(void)
 	}
 	diag_clear(&d);
 	fly_camera_params(&v.cam, &p);
-	/* The camera whitted builds from the printed numbers. */
-	if (camera_init(&cam, &p, v.scene->image_size, &d) < 0 ||
-	    command_format(v.command, sizeof(v.command), v.scene_path, &v.opts, &p,
-			   v.scene->image_size) < 0 ||
-	    capture_reserve(&v.next_capture, path, sizeof(path), &d) < 0) {
-		if (!d.msg[0])
-			snprintf(d.msg, sizeof(d.msg), "the scene's path is too long for the command");
-		print_diag(&d, "error");
+	command_settings(&set, &v.opts, v.scene, &p);
+	/* The camera whitted builds from the printed numbers (and the near
+	 * plane and aspect that it reads from the file again). */
+	if (camera_init(&cam, &p, scene_image_size(v.scene), &d) < 0) {
+		tool_print_diag(&d, "error");
 		return;
 	}
-	rs.recursion = v.scene->recursion;
+	rc = command_format(v.command, sizeof(v.command), v.scene_path, v.opts.read.dialect, &set);
+	if (rc < 0) {
+		diag_fail(&d, (enum rt_err)-rc, "%s",
+			  rc == -RT_E_RANGE ? "the scene's path is too long for the command"
+					    : "no whitted command can give this floor");
+		tool_print_diag(&d, "error");
+		return;
+	}
+	if (capture_reserve(&v.next_capture, path, sizeof(path), &d) < 0) {
+		tool_print_diag(&d, "error");
+		return;
+	}
+	rs.recursion = scene_recursion(v.scene);
 	rs.clamp = v.opts.clamp;
-	if (capture_start(&v.capture, v.scene, &cam, &rs, v.threads, path, &d) < 0) {
-		print_diag(&d, "error");
+	if (capture_start(&v.capture, v.scene, &cam, &rs, v.opts.samples, v.threads, path, &d) < 0) {
+		tool_print_diag(&d, "error");
 		remove(path);
 		return;
 	}
@@ -334,14 +318,14 @@ static int load(void)
 	int rc;
 
 	diag_clear(&d);
-	rc = cli_scene_load(&v.opts, v.scene_path, print_note, NULL, &v.scene, &cam, &d);
+	rc = cli_scene_load(&v.opts, v.scene_path, tool_print_note, &v.opts.quiet, &v.scene, &cam, &d);
 	if (rc < 0) {
-		print_diag(&d, "error");
-		return rc == -RT_E_INVALID ? EXIT_USAGE : EXIT_SCENE;
+		tool_print_diag(&d, "error");
+		return rc == -RT_E_INVALID ? TOOL_EXIT_USAGE : TOOL_EXIT_FAILURE;
 	}
 	if (scene_prepare(v.scene, v.threads, &d) < 0 || fly_camera_init(&v.cam, &v.opts.camera, &d) < 0) {
-		print_diag(&d, "error");
-		return EXIT_SCENE;
+		tool_print_diag(&d, "error");
+		return TOOL_EXIT_FAILURE;
 	}
 	v.home = v.cam;
 	box = draw_scene_box(v.scene);
@@ -358,6 +342,7 @@ int main(int argc, char **argv)
 	int glut_argc = 1, status;
 	struct diag d;
 
+	tool_set_name("whitted-view");
 	if ((status = parse_args(argc, argv)) != 0 || (status = load()) != 0) {
 		scene_destroy(v.scene);
 		return status;
@@ -371,10 +356,10 @@ int main(int argc, char **argv)
 	glutCreateWindow("whitted");
 	set_title(NULL);
 	diag_clear(&d);
-	if (draw_init(&v.draw, v.scene, print_note, NULL, &d) < 0) {
-		print_diag(&d, "error");
+	if (draw_init(&v.draw, v.scene, tool_print_note, &v.opts.quiet, &d) < 0) {
+		tool_print_diag(&d, "error");
 		scene_destroy(v.scene);
-		return EXIT_SCENE;
+		return TOOL_EXIT_FAILURE;
 	}
 	glutDisplayFunc(on_display);
 	glutReshapeFunc(on_reshape);
@@ -382,7 +367,7 @@ int main(int argc, char **argv)
 	glutSpecialFunc(on_special);
 	glutCloseFunc(on_close);
 	fprintf(stderr, "whitted-view: %s, %zu objects, %zu lights; press h for the keys\n",
-		v.scene_name, v.scene->n_shapes, v.scene->n_lights);
+		v.scene_name, scene_shape_count(v.scene), scene_light_count(v.scene));
 	glutMainLoop();
 	scene_destroy(v.scene);
 	return 0;

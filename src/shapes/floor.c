@@ -1,16 +1,39 @@
 /* The implicit checkerboard floor: the square |x|, |y| < width / 2 on the
- * plane z = 0 (half-open: [-w/2, w/2)), tile (i, j) = (floor((x + w/2) /
- * tile), floor((y + w/2) / tile)) white when i + j is even, black otherwise. */
+ * plane z = 0 (half-open: [-w/2, w/2)), cell (i, j) = (floor((x + w/2) /
+ * cell), floor((y + w/2) / cell)) white when i + j is even, black otherwise;
+ * or nearfar's infinite one, the whole plane z = 0 with cell (floor(x /
+ * cell), floor(y / cell)), white when the sum is even: its own table, so
+ * that the finite floor's code and images stay as they were.  With
+ * textures (--floor-texture), a white cell's colour is the texel of the
+ * white image, and a black cell's that of the black image, under the
+ * point: one image over each cell, nearest texel (floor_texel). */
+#define _XOPEN_SOURCE 700
+#include <assert.h>
+#include <errno.h>
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
-#include "alloc.h"
-#include "diag.h"
-#include "pov.h"
-#include "shape.h"
+#include "base/alloc.h"
+#include "base/hash.h"
+#include "whitted/diag.h"
+#include "whitted/image.h"
+#include "whitted/mesh.h"
+#include "whitted/pov.h"
+#include "shapes/shapes.h"
+#include "whitted/shape.h"
+
+extern const struct shape_ops floor_ops;
+static const struct shape_ops floor_infinite_ops;
 
 struct floor {
 	struct shape base;
-	double half, tile;
+	double half, cell;
+	/* The white cells' and the black cells' textures: no pixels (and a
+	 * NULL path) for the plain colour. */
+	struct image tex[2];
+	char *tex_path[2];		/* absolute, for the POV-Ray export */
+	enum image_format tex_format[2];
 };
 
 static bool floor_intersect(const struct shape *s, const struct ray *r,
@@ -39,11 +62,9 @@ static struct vec3 floor_normal(const struct shape *s, struct vec3 p)
 	return vec3_make(0.0, 0.0, 1.0);
 }
 
-static struct color floor_color_at(const struct shape *s, struct vec3 p)
+/* White when the cell indices' sum i + j is even, black otherwise. */
+static struct color floor_cell_color(double i, double j)
 {
-	const struct floor *fl = (const struct floor *)s;
-	double i = floor((p.x + fl->half) / fl->tile);
-	double j = floor((p.y + fl->half) / fl->tile);
 	/* i + j is even when half of it is a whole number: the same test as
 	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
 	 * NaN, as there), without the library call. */
@@ -51,6 +72,62 @@ static struct color floor_color_at(const struct shape *s, struct vec3 p)
 	bool even = half == floor(half) && half != INFINITY;
 
 	return even ? color_make(1.0, 1.0, 1.0) : color_make(0.0, 0.0, 0.0);
+}
+
+/* The texel over the point (u, v) of a cell, both in [0, 1) from the
+ * cell's corner of least x and y: the image covers the cell upright as the
+ * default camera sees it, its top row along the cell's far (+y) edge and
+ * its left column along the -x edge, so texel (floor(u W), H - 1 -
+ * floor(v H)), clamped into the image against rounding.  8-bit values are
+ * taken linearly (v / 255), like the scene file's colours. */
+static struct color floor_texel(const struct image *t, double u, double v)
+{
+	int col = (int)(u * t->width), row = t->height - 1 - (int)(v * t->height);
+	const uint8_t *px;
+
+	col = col < 0 ? 0 : col >= t->width ? t->width - 1 : col;
+	row = row < 0 ? 0 : row >= t->height ? t->height - 1 : row;
+	px = t->pixels + ((size_t)row * (size_t)t->width + (size_t)col) * 3;
+	return color_make(px[0] / 255.0, px[1] / 255.0, px[2] / 255.0);
+}
+
+/* The colour of cell (i, j) at the point whose cell coordinates are (cx,
+ * cy) = (i + u, j + v). */
+static struct color floor_cell_color_at(const struct floor *fl, double cx, double cy)
+{
+	double i = floor(cx), j = floor(cy);
+	struct color c = floor_cell_color(i, j);
+	const struct image *t = &fl->tex[c.r > 0.5 ? 0 : 1];
+
+	return t->pixels ? floor_texel(t, cx - i, cy - j) : c;
+}
+
+/* With textures, the highlight keeps the cell's own colour (white or
+ * black): the handout's texel scales the ambient and diffuse terms only. */
+static bool floor_specular_color_at(const struct shape *s, struct vec3 p, struct color *out)
+{
+	const struct floor *fl = (const struct floor *)s;
+
+	if (!fl->tex_path[0] && !fl->tex_path[1])
+		return false;
+	if (s->ops == &floor_ops)
+		*out = floor_cell_color(floor((p.x + fl->half) / fl->cell),
+					floor((p.y + fl->half) / fl->cell));
+	else
+		*out = floor_cell_color(floor(p.x / fl->cell), floor(p.y / fl->cell));
+	return true;
+}
+
+static struct color floor_color_at(const struct shape *s, struct vec3 p)
+{
+	const struct floor *fl = (const struct floor *)s;
+	double i, j;
+
+	if (fl->tex_path[0] || fl->tex_path[1])
+		return floor_cell_color_at(fl, (p.x + fl->half) / fl->cell, (p.y + fl->half) / fl->cell);
+	i = floor((p.x + fl->half) / fl->cell);
+	j = floor((p.y + fl->half) / fl->cell);
+	return floor_cell_color(i, j);
 }
 
 static bool floor_bounds(const struct shape *s, struct aabb *out)
@@ -62,24 +139,72 @@ static bool floor_bounds(const struct shape *s, struct aabb *out)
 	return true;
 }
 
-/* POV-Ray's checker is colour 1 where floor(x) + floor(y) + floor(z) is even,
- * in pattern space.  Scaling by the tile and translating by -w/2 in x and y
- * gives our tile indices; translating z by -tile/2 puts the plane z = 0 at
- * pattern z = 0.5, mid-tile, where floor(z) = 0 keeps the parity. */
+/* A cell's texture: the material's, or with a texture k (0 white, 1 black)
+ * an image_map over each unit square of pattern space (so each cell, once
+ * the checker is scaled), nearest texel (no interpolate), read linearly
+ * (gamma 1, as whitted takes the bytes), its finish the cell's: the
+ * texel is the pigment of the ambient and diffuse terms and the phong
+ * highlight stays white (the black cell has none). */
+static void floor_write_cell(const struct shape *s, int k, const struct material *m,
+			     const struct pov_options *plain, FILE *out)
+{
+	const struct floor *fl = (const struct floor *)s;
+	const char *p, *name = plain->floor_texture[k];
+
+	if (!fl->tex_path[k]) {
+		pov_write_texture(out, m, plain);
+		return;
+	}
+	if (name)
+		fputs("texture { pigment { image_map { png \"", out);
+	else
+		fprintf(out, "texture { pigment { image_map { %s \"",
+			fl->tex_format[k] == RT_FORMAT_BMP ? "bmp" :
+			fl->tex_format[k] == RT_FORMAT_PPM ? "ppm" : "png");
+	for (p = name ? name : fl->tex_path[k]; *p; p++) {
+		if (*p == '"' || *p == '\\')
+			fputc('\\', out);
+		fputc(*p, out);
+	}
+	fputs("\" gamma 1.0 } } finish { ambient ", out);
+	pov_write_number(out, m->ka);
+	pov_write_finish_terms(out, m);
+}
+
+/* The texture of a checkerboard whose cell (0, 0) starts at (x0, y0).
+ * POV-Ray's checker is colour 1 where floor(x) + floor(y) + floor(z) is
+ * even, in pattern space.  Scaling by the cell and translating by (x0, y0)
+ * gives our cell indices; translating z by -cell/2 puts the plane z = 0 at
+ * pattern z = 0.5, mid-cell, where floor(z) = 0 keeps the parity. */
+static void floor_write_checker(const struct shape *s, double cell, double x0, double y0,
+				const struct pov_options *opt, FILE *out)
+{
+	/* The cell colour varies, so the floor cannot use the exact mode's
+	 * tinted light group: a plain texture is exact here, since the white
+	 * cell's highlight is white and the black cell has none. */
+	struct pov_options plain = { RT_POV_FINISH_PLAIN, false, { NULL, NULL } };
+	struct material black = s->mat;
+
+	plain.floor_texture[0] = opt->floor_texture[0];
+	plain.floor_texture[1] = opt->floor_texture[1];
+	black.color = color_make(0.0, 0.0, 0.0);
+	black.ks = 0.0;
+	fputs("\n  texture { checker\n    ", out);
+	floor_write_cell(s, 0, &s->mat, &plain, out);
+	fputs("\n    ", out);
+	floor_write_cell(s, 1, &black, &plain, out);
+	fputs("\n    scale ", out);
+	pov_write_number(out, cell);
+	fputs(" translate ", out);
+	pov_write_vector(out, x0, y0, -0.5 * cell);
+	fputs("\n  }\n}\n", out);
+}
+
 static int floor_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)
 {
 	const struct floor *fl = (const struct floor *)s;
-	/* The tile colour varies, so the floor cannot use the exact mode's
-	 * tinted light group: a plain texture is exact here, since the white
-	 * tile's highlight is white and the black tile has none. */
-	const struct pov_options plain = { RT_POV_FINISH_PLAIN };
-	struct material black = s->mat;
 	double h = fl->half;
 
-	(void)opt;
-
-	black.color = color_make(0.0, 0.0, 0.0);
-	black.ks = 0.0;
 	fputs("polygon { 5, ", out);
 	pov_write_vector(out, -h, -h, 0.0);
 	fputs(", ", out);
@@ -90,33 +215,109 @@ static int floor_export_pov(const struct shape *s, FILE *out, const struct pov_o
 	pov_write_vector(out, -h, h, 0.0);
 	fputs(", ", out);
 	pov_write_vector(out, -h, -h, 0.0);
-	fputs("\n  texture { checker\n    ", out);
-	pov_write_texture(out, &s->mat, &plain);
-	fputs("\n    ", out);
-	pov_write_texture(out, &black, &plain);
-	fputs("\n    scale ", out);
-	pov_write_number(out, fl->tile);
-	fputs(" translate ", out);
-	pov_write_vector(out, -h, -h, -0.5 * fl->tile);
-	fputs("\n  }\n}\n", out);
+	floor_write_checker(s, fl->cell, -h, -h, opt, out);
 	return ferror(out) ? -RT_E_IO : 0;
 }
 
 static void floor_destroy(struct shape *s)
 {
+	struct floor *fl = (struct floor *)s;
+	int k;
+
+	for (k = 0; k < 2; k++) {
+		image_free(&fl->tex[k]);
+		rt_free(fl->tex_path[k]);
+	}
 	rt_free(s);
 }
 
-/* Not in the registry: the floor is implicit, never read from a file. */
-static void floor_geometry(const struct shape *s, struct shape_geometry *out)
+/* The quad p[0..3] (in order around it) as two triangles split along its
+ * 1-3 diagonal, as OpenGL's Mesa splits a quad: the viewer's Gouraud
+ * shading is then what it was when the floor was drawn as quads. */
+static int floor_add_quad(struct mesh *out, const struct vec3 p[4], const struct vec3 n[3],
+			  const struct mesh_uv uv[4])
 {
-	const struct floor *fl = (const struct floor *)s;
+	const struct vec3 p1[3] = { p[0], p[1], p[3] };
+	const struct mesh_uv uv1[3] = { uv[0], uv[1], uv[3] };
+	const struct vec3 p2[3] = { p[1], p[2], p[3] };
+	const struct mesh_uv uv2[3] = { uv[1], uv[2], uv[3] };
+	int rc;
 
-	out->kind = RT_SHAPE_FLOOR;
-	out->u.floor.width = 2.0 * fl->half;
-	out->u.floor.tile = fl->tile;
+	if ((rc = mesh_add_triangle_uv(out, p1, n, uv1)) < 0)
+		return rc;
+	return mesh_add_triangle_uv(out, p2, n, uv2);
 }
 
+/* The viewer's texels along a cell: 1 for plain cells, else the larger
+ * side of the textures, at most 16 (the mesh's texture holds two cells
+ * by two), which shows textures up to 16 texels wide exactly and larger
+ * ones sampled. */
+static int floor_texels_per_cell(const struct shape *s)
+{
+	const struct floor *fl = (const struct floor *)s;
+	int n = 1, k;
+
+	for (k = 0; k < 2; k++) {
+		if (fl->tex[k].width > n)
+			n = fl->tex[k].width;
+		if (fl->tex[k].height > n)
+			n = fl->tex[k].height;
+	}
+	return n > 16 ? 16 : n;
+}
+
+/* A grid of 3 * segments quads a side over the area's x and y (a viewer
+ * that lights per vertex needs vertices under the highlights) under a
+ * 2 x 2 texture of the cells' colours, repeated every two cells: u and v
+ * count cell pairs from the corner (cx, cy) of a cell (0, 0) of even
+ * parity, as the cell index does, so the texture's cells fall on the
+ * floor's whatever their number. */
+static int floor_grid(const struct shape *s, const struct mesh_options *opt, struct aabb area,
+		      double cx, double cy, double cell, struct mesh *out)
+{
+	const struct vec3 up = vec3_make(0.0, 0.0, 1.0), n[3] = { up, up, up };
+	const int quads = 3 * opt->segments;
+	const double x0 = area.min.x, y0 = area.min.y, period = 2.0 * cell;
+	const double side_x = (area.max.x - x0) / quads, side_y = (area.max.y - y0) / quads;
+	const int per_cell = floor_texels_per_cell(s), side = 2 * per_cell;
+	struct color texels[RT_MESH_TEXELS_MAX];
+	int i, j, k, rc;
+
+	for (k = 0; k < side * side; k++)
+		texels[k] = shape_color_at(s, vec3_make(cx + (k % side + 0.5) * cell / per_cell,
+							cy + (k / side + 0.5) * cell / per_cell, 0.0));
+	if ((rc = mesh_set_texture(out, side, side, texels)) < 0)
+		return rc;
+	for (j = 0; j < quads; j++) {
+		for (i = 0; i < quads; i++) {
+			static const int corner[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+			struct vec3 p[4];
+			struct mesh_uv uv[4];
+			for (k = 0; k < 4; k++) {
+				p[k] = vec3_make(x0 + (i + corner[k][0]) * side_x,
+						 y0 + (j + corner[k][1]) * side_y, 0.0);
+				uv[k].u = (p[k].x - cx) / period;
+				uv[k].v = (p[k].y - cy) / period;
+			}
+			if ((rc = floor_add_quad(out, p, n, uv)) < 0)
+				return rc;
+		}
+	}
+	return 0;
+}
+
+/* The whole square, its cell (0, 0) at the corner (-w/2, -w/2). */
+static int floor_tessellate(const struct shape *s, const struct mesh_options *opt,
+			    struct mesh *out)
+{
+	const struct floor *fl = (const struct floor *)s;
+	const double h = fl->half;
+	struct aabb area = { { -h, -h, 0.0 }, { h, h, 0.0 } };
+
+	return floor_grid(s, opt, area, -h, -h, fl->cell, out);
+}
+
+/* Not in the registry: the floor is implicit, never read from a file. */
 const struct shape_ops floor_ops = {
 	.keyword = "floor",
 	.intersect = floor_intersect,
@@ -124,24 +325,164 @@ const struct shape_ops floor_ops = {
 	.export_pov = floor_export_pov,
 	.destroy = floor_destroy,
 	.color_at = floor_color_at,
+	.specular_color_at = floor_specular_color_at,
 	.bounds = floor_bounds,
-	.geometry = floor_geometry,
+	.tessellate = floor_tessellate,
 };
 
-struct shape *floor_create(double width, double tile)
+/* The infinite floor: every point of z = 0. */
+static bool floor_infinite_intersect(const struct shape *s, const struct ray *r,
+				     double t_min, double *t_max)
 {
-	struct floor *fl = rt_malloc(sizeof(*fl));
+	double t;
 
+	(void)s;
+	if (r->dir.z == 0.0)
+		return false;
+	t = -r->origin.z / r->dir.z;
+	if (!(t > t_min && t < *t_max))
+		return false;
+	*t_max = t;
+	return true;
+}
+
+static struct color floor_infinite_color_at(const struct shape *s, struct vec3 p)
+{
+	const struct floor *fl = (const struct floor *)s;
+
+	if (fl->tex_path[0] || fl->tex_path[1])
+		return floor_cell_color_at(fl, p.x / fl->cell, p.y / fl->cell);
+	return floor_cell_color(floor(p.x / fl->cell), floor(p.y / fl->cell));
+}
+
+/* Unbounded in x and y, and flat: z = 0 is the one axis it is bounded
+ * along. */
+static bool floor_infinite_bounds(const struct shape *s, struct aabb *out)
+{
+	(void)s;
+	out->min.z = 0.0;
+	out->max.z = 0.0;
+	return false;
+}
+
+/* The plane z = 0 with cell (0, 0) at the origin. */
+static int floor_infinite_export_pov(const struct shape *s, FILE *out,
+				     const struct pov_options *opt)
+{
+	const struct floor *fl = (const struct floor *)s;
+
+	fputs("plane { z, 0", out);
+	floor_write_checker(s, fl->cell, 0.0, 0.0, opt, out);
+	return ferror(out) ? -RT_E_IO : 0;
+}
+
+/* The plane over the x and y extent of the region around the scene, at
+ * z = 0 even when the region lies above or below it (the floor under a
+ * scene of objects in the air is still drawn). */
+static int floor_infinite_tessellate(const struct shape *s, const struct mesh_options *opt,
+				     struct mesh *out)
+{
+	const struct floor *fl = (const struct floor *)s;
+	struct aabb area = opt->around;
+
+	area.min.z = area.max.z = 0.0;
+	if (!(area.min.x < area.max.x && area.min.y < area.max.y) ||
+	    !vec3_is_finite(area.min) || !vec3_is_finite(area.max))
+		return 0;
+	return floor_grid(s, opt, area, 0.0, 0.0, fl->cell, out);
+}
+
+static const struct shape_ops floor_infinite_ops = {
+	.keyword = "floor",
+	.intersect = floor_infinite_intersect,
+	.normal = floor_normal,
+	.export_pov = floor_infinite_export_pov,
+	.destroy = floor_destroy,
+	.color_at = floor_infinite_color_at,
+	.specular_color_at = floor_specular_color_at,
+	.bounds = floor_infinite_bounds,
+	.tessellate = floor_infinite_tessellate,
+};
+
+struct shape *floor_create_view(double width, double cell, const struct material *m)
+{
+	struct floor *fl;
+
+	assert(width > 0.0 && cell > 0.0);
+	fl = rt_malloc(sizeof(*fl));
 	if (!fl)
 		return NULL;
-	fl->base.ops = &floor_ops;
+	fl->base.ops = width == INFINITY ? &floor_infinite_ops : &floor_ops;
+	fl->base.mat = *m;
 	fl->base.mat.color = color_make(1.0, 1.0, 1.0);
-	fl->base.mat.ka = 0.4;
-	fl->base.mat.kd = 0.2;
-	fl->base.mat.ks = 0.2;
-	fl->base.mat.kr = 0.2;
-	fl->base.mat.shininess = 1.0;
 	fl->half = 0.5 * width;
-	fl->tile = tile;
+	fl->cell = cell;
+	memset(fl->tex, 0, sizeof(fl->tex));
+	fl->tex_path[0] = fl->tex_path[1] = NULL;
 	return &fl->base;
+}
+
+uint64_t floor_texture_hash(const struct shape *s)
+{
+	const struct floor *fl = (const struct floor *)s;
+	uint64_t h = RT_HASH_INIT;
+	int k;
+
+	if (!fl->tex_path[0] && !fl->tex_path[1])
+		return 0;
+	for (k = 0; k < 2; k++) {
+		const struct image *t = &fl->tex[k];
+		int size[2] = { t->width, t->height };
+
+		h = hash_bytes(h, size, sizeof(size));
+		if (t->pixels)
+			h = hash_bytes(h, t->pixels, (size_t)t->width * (size_t)t->height * 3);
+	}
+	return h;
+}
+
+const struct image *floor_texture(const struct shape *s, int k)
+{
+	const struct floor *fl = (const struct floor *)s;
+
+	assert(s->ops == &floor_ops || s->ops == &floor_infinite_ops);
+	return fl->tex_path[k] ? &fl->tex[k] : NULL;
+}
+
+int floor_set_textures(struct shape *s, const char *white, const char *black, struct diag *d)
+{
+	struct floor *fl = (struct floor *)s;
+	const char *paths[2] = { white, black };
+	char *abs;
+	int k, rc;
+
+	assert(s->ops == &floor_ops || s->ops == &floor_infinite_ops);
+	for (k = 0; k < 2; k++) {
+		size_t len;
+
+		if (!paths[k])
+			continue;
+		if ((rc = image_read(paths[k], &fl->tex[k], &fl->tex_format[k], d)) < 0)
+			return rc;
+		/* POV-Ray reads the file again, maybe from another directory. */
+		abs = realpath(paths[k], NULL);
+		if (!abs)
+			return diag_set(d, RT_E_IO, paths[k], 0, 0, "cannot resolve: %s",
+					strerror(errno));
+		len = strlen(abs) + 1;
+		fl->tex_path[k] = rt_malloc(len);
+		if (fl->tex_path[k])
+			memcpy(fl->tex_path[k], abs, len);
+		free(abs);
+		if (!fl->tex_path[k])
+			return diag_fail(d, RT_E_NOMEM, "out of memory");
+	}
+	return 0;
+}
+
+const struct material floor_classic_material = { { 1.0, 1.0, 1.0 }, 0.4, 0.2, 0.2, 0.2, 1.0, 0.0, 1.0 };
+
+struct shape *floor_create(double width, double cell)
+{
+	return floor_create_view(width, cell, &floor_classic_material);
 }

@@ -1,14 +1,18 @@
 /* The general quadric A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y
  * + I z + J = 0, clipped to a box on the axes whose extent is not zero.  Its
  * roots are tried nearest first and each must lie in the box, so a clipped
- * near root falls through to the far one. */
+ * near root falls through to the far one.  F and its gradient are written
+ * once, for the roots, the normal and the mesh alike. */
 #include <math.h>
 
-#include "alloc.h"
-#include "diag.h"
-#include "parse.h"
-#include "pov.h"
-#include "shape.h"
+#include "base/alloc.h"
+#include "whitted/diag.h"
+#include "whitted/mesh.h"
+#include "whitted/parser.h"
+#include "whitted/pov.h"
+#include "whitted/scene.h"
+#include "shapes/shapes.h"
+#include "whitted/shape.h"
 #include "shapes/solve.h"
 
 struct quadric {
@@ -18,8 +22,25 @@ struct quadric {
 	bool clipped[3];
 };
 
+/* F(p) = A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J:
+ * the one place the surface's function is written. */
+static double quadric_value(const struct quadric *q, struct vec3 p)
+{
+	return q->a * p.x * p.x + q->b * p.y * p.y + q->c * p.z * p.z +
+	       q->d * p.x * p.y + q->e * p.x * p.z + q->f * p.y * p.z +
+	       q->g * p.x + q->h * p.y + q->i * p.z + q->j;
+}
+
+/* The gradient of F: the normal, and the mesh's vertex normals. */
+static struct vec3 quadric_gradient(const struct quadric *q, struct vec3 p)
+{
+	return vec3_make(2.0 * q->a * p.x + q->d * p.y + q->e * p.z + q->g,
+			 2.0 * q->b * p.y + q->d * p.x + q->f * p.z + q->h,
+			 2.0 * q->c * p.z + q->e * p.x + q->f * p.y + q->i);
+}
+
 /* F(P) for the coefficients, with P = o + t dir substituted:
- * F = qa t^2 + qb t + qc. */
+ * F = qa t^2 + qb t + qc, where qc = F(o). */
 static void quadric_coefficients(const struct quadric *q, const struct ray *r,
 				 double *qa, double *qb, double *qc)
 {
@@ -31,9 +52,7 @@ static void quadric_coefficients(const struct quadric *q, const struct ray *r,
 	      q->d * (o.x * d.y + o.y * d.x) + q->e * (o.x * d.z + o.z * d.x) +
 	      q->f * (o.y * d.z + o.z * d.y) +
 	      q->g * d.x + q->h * d.y + q->i * d.z;
-	*qc = q->a * o.x * o.x + q->b * o.y * o.y + q->c * o.z * o.z +
-	      q->d * o.x * o.y + q->e * o.x * o.z + q->f * o.y * o.z +
-	      q->g * o.x + q->h * o.y + q->i * o.z + q->j;
+	*qc = quadric_value(q, o);
 }
 
 static bool quadric_in_clip(const struct quadric *q, struct vec3 p)
@@ -64,10 +83,7 @@ static bool quadric_intersect(const struct shape *s, const struct ray *r,
 
 static struct vec3 quadric_normal(const struct shape *s, struct vec3 p)
 {
-	const struct quadric *q = (const struct quadric *)s;
-	struct vec3 grad = vec3_make(2.0 * q->a * p.x + q->d * p.y + q->e * p.z + q->g,
-				     2.0 * q->b * p.y + q->d * p.x + q->f * p.z + q->h,
-				     2.0 * q->c * p.z + q->e * p.x + q->f * p.y + q->i);
+	struct vec3 grad = quadric_gradient((const struct quadric *)s, p);
 
 	/* At a singular point (a cone's apex) any direction will do. */
 	if (grad.x == 0.0 && grad.y == 0.0 && grad.z == 0.0)
@@ -75,15 +91,98 @@ static struct vec3 quadric_normal(const struct shape *s, struct vec3 p)
 	return vec3_normalize(grad);
 }
 
+/* The clip box on the clipped axes; the wrapper (or the caller) has set
+ * the others. */
 static bool quadric_bounds(const struct shape *s, struct aabb *out)
 {
 	const struct quadric *q = (const struct quadric *)s;
 
-	if (!q->clipped[0] || !q->clipped[1] || !q->clipped[2])
+	if (q->clipped[0]) {
+		out->min.x = q->lo.x;
+		out->max.x = q->hi.x;
+	}
+	if (q->clipped[1]) {
+		out->min.y = q->lo.y;
+		out->max.y = q->hi.y;
+	}
+	if (q->clipped[2]) {
+		out->min.z = q->lo.z;
+		out->max.z = q->hi.z;
+	}
+	return q->clipped[0] && q->clipped[1] && q->clipped[2];
+}
+
+/* A whole ellipsoid: the quadratic part x^T M x (M symmetric, its off
+ * diagonal D/2, E/2, F/2) definite, taken positive by the sign of A
+ * (Sylvester: the leading minors > 0), F < 0 at the centre c = -M^-1 (G,
+ * H, I) / 2 (a real ellipsoid, not a point or nothing), and on each
+ * clipped axis the box holding its extent c_i +- sqrt(-F(c) (M^-1)_ii). */
+static bool quadric_closed(const struct shape *s)
+{
+	const struct quadric *q = (const struct quadric *)s;
+	double k = q->a > 0.0 ? 1.0 : -1.0;
+	double a = k * q->a, b = k * q->b, c = k * q->c, d = k * q->d / 2.0,
+	       e = k * q->e / 2.0, f = k * q->f / 2.0;
+	double inv[3][3], det, lin[3] = { k * q->g, k * q->h, k * q->i }, ctr[3], fc;
+	double lo[3] = { q->lo.x, q->lo.y, q->lo.z }, hi[3] = { q->hi.x, q->hi.y, q->hi.z };
+	int i, j;
+
+	if (q->a == 0.0)
 		return false;
-	out->min = q->lo;
-	out->max = q->hi;
+	/* The adjugate of M ((M^-1) det). */
+	inv[0][0] = b * c - f * f;
+	inv[0][1] = e * f - d * c;
+	inv[0][2] = d * f - b * e;
+	inv[1][1] = a * c - e * e;
+	inv[1][2] = d * e - a * f;
+	inv[2][2] = a * b - d * d;
+	inv[1][0] = inv[0][1];
+	inv[2][0] = inv[0][2];
+	inv[2][1] = inv[1][2];
+	det = a * inv[0][0] + d * inv[0][1] + e * inv[0][2];
+	if (!(a > 0.0 && inv[2][2] > 0.0 && det > 0.0))
+		return false;
+	fc = k * q->j;
+	for (i = 0; i < 3; i++) {
+		ctr[i] = 0.0;
+		for (j = 0; j < 3; j++)
+			ctr[i] -= inv[i][j] * lin[j] / (2.0 * det);
+		fc += lin[i] * ctr[i] / 2.0;
+	}
+	if (!(fc < 0.0) || !isfinite(fc))
+		return false;
+	for (i = 0; i < 3; i++) {
+		double ext = sqrt(-fc * inv[i][i] / det);
+
+		if (q->clipped[i] && !(lo[i] <= ctr[i] - ext && ctr[i] + ext <= hi[i]))
+			return false;
+	}
 	return true;
+}
+
+static double quadric_field_value(const void *ctx, struct vec3 p)
+{
+	return quadric_value(ctx, p);
+}
+
+static struct vec3 quadric_field_gradient(const void *ctx, struct vec3 p)
+{
+	return quadric_gradient(ctx, p);
+}
+
+/* F = 0 sampled in the clip box, and in opt->around along the axes that
+ * are not clipped, with 2 * segments cells along the longest side: marching
+ * tetrahedra needs finer cells than a UV grid needs facets. */
+static int quadric_tessellate(const struct shape *s, const struct mesh_options *opt,
+			      struct mesh *out)
+{
+	const struct mesh_field field = { quadric_field_value, quadric_field_gradient, s };
+	struct aabb box = opt->around;
+	int cells[3];
+
+	quadric_bounds(s, &box);
+	mesh_grid_cells(box, 2 * opt->segments, cells);
+	return mesh_implicit(out, &field, box, cells);
 }
 
 static void quadric_write_clip(const struct quadric *q, FILE *out)
@@ -132,30 +231,18 @@ static void quadric_destroy(struct shape *s)
 
 static int quadric_parse(struct parser *p, struct shape **out);
 
-static void quadric_geometry(const struct shape *s, struct shape_geometry *out)
-{
-	const struct quadric *q = (const struct quadric *)s;
-	const double coef[10] = { q->a, q->b, q->c, q->d, q->e, q->f, q->g, q->h, q->i, q->j };
-	int k;
-
-	out->kind = RT_SHAPE_QUADRIC;
-	for (k = 0; k < 10; k++)
-		out->u.quadric.coef[k] = coef[k];
-	out->u.quadric.lo = q->lo;
-	out->u.quadric.hi = q->hi;
-	for (k = 0; k < 3; k++)
-		out->u.quadric.clipped[k] = q->clipped[k];
-}
-
 const struct shape_ops quadric_ops = {
 	.keyword = "general",
+	.dialects = RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) |
+		     RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
 	.parse = quadric_parse,
 	.intersect = quadric_intersect,
 	.normal = quadric_normal,
 	.export_pov = quadric_export_pov,
 	.destroy = quadric_destroy,
 	.bounds = quadric_bounds,
-	.geometry = quadric_geometry,
+	.tessellate = quadric_tessellate,
+	.closed = quadric_closed,
 };
 
 struct shape *quadric_create(const double coef[10], struct vec3 clip_ref,

@@ -1,4 +1,5 @@
-/* Stable quadratic roots, ray/sphere and Moller-Trumbore ray/triangle. */
+/* Stable quadratic roots, ray/sphere, Moller-Trumbore ray/triangle and the
+ * ray through a convex solid of planes. */
 #include <math.h>
 
 #include "shapes/solve.h"
@@ -93,4 +94,52 @@ bool solve_ray_triangle(const struct ray *r, struct vec3 v0, struct vec3 e1, str
 		return false;
 	*t = hit;
 	return true;
+}
+
+bool solve_ray_convex(const struct ray *r, const struct solve_plane *planes, int n,
+		      double t_min, double t_max, double *t)
+{
+	double t0 = -INFINITY, t1 = INFINITY;
+	int i;
+
+	for (i = 0; i < n; i++) {
+		/* n.(o + t dir) <= d  <=>  t (n.dir) <= d - n.o */
+		double den = vec3_dot(planes[i].n, r->dir);
+		double num = planes[i].d - vec3_dot(planes[i].n, r->origin);
+
+		if (den == 0.0) {
+			if (num < 0.0)
+				return false;
+		} else if (den < 0.0) {
+			t0 = fmax(t0, num / den);
+		} else {
+			t1 = fmin(t1, num / den);
+		}
+		if (t0 > t1)
+			return false;
+	}
+	if (t0 > t_min && t0 < t_max) {
+		*t = t0;
+		return true;
+	}
+	if (t1 > t_min && t1 < t_max) {
+		*t = t1;
+		return true;
+	}
+	return false;
+}
+
+int solve_convex_face(const struct solve_plane *planes, int n, struct vec3 p)
+{
+	double best = -INFINITY;
+	int i, face = 0;
+
+	for (i = 0; i < n; i++) {
+		double dist = vec3_dot(planes[i].n, p) - planes[i].d;
+		if (dist > best) {
+			best = dist;
+			face = i;
+		}
+	}
+	return face;
 }

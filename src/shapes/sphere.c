@@ -1,11 +1,13 @@
 /* The sphere: |P - centre| = radius. */
 #include <math.h>
 
-#include "alloc.h"
-#include "diag.h"
-#include "parse.h"
-#include "pov.h"
-#include "shape.h"
+#include "base/alloc.h"
+#include "whitted/diag.h"
+#include "whitted/mesh.h"
+#include "whitted/parser.h"
+#include "whitted/pov.h"
+#include "shapes/shapes.h"
+#include "whitted/shape.h"
 #include "shapes/solve.h"
 
 struct sphere {
@@ -64,13 +66,53 @@ static void sphere_destroy(struct shape *s)
 
 static int sphere_parse(struct parser *p, struct shape **out);
 
-static void sphere_geometry(const struct shape *s, struct shape_geometry *out)
+/* The unit direction at longitude i / slices, latitude j / stacks from the
+ * +z pole. */
+static struct vec3 sphere_direction(int i, int j, int slices, int stacks)
+{
+	const double pi = 3.14159265358979323846;
+	double lon = 2.0 * pi * i / slices, lat = pi * j / stacks;
+
+	return vec3_make(sin(lat) * cos(lon), sin(lat) * sin(lon), cos(lat));
+}
+
+/* A UV grid: opt->segments slices around the pole axis (z) and half as
+ * many stacks from pole to pole; the normals are the exact ones. */
+static int sphere_tessellate(const struct shape *s, const struct mesh_options *opt,
+			     struct mesh *out)
 {
 	const struct sphere *sp = (const struct sphere *)s;
+	int slices = opt->segments, stacks = opt->segments / 2, i, j, k, rc;
 
-	out->kind = RT_SHAPE_SPHERE;
-	out->u.sphere.centre = sp->centre;
-	out->u.sphere.radius = sp->radius;
+	for (j = 0; j < stacks; j++) {
+		for (i = 0; i < slices; i++) {
+			struct vec3 n[4] = {
+				sphere_direction(i, j, slices, stacks),
+				sphere_direction(i, j + 1, slices, stacks),
+				sphere_direction(i + 1, j + 1, slices, stacks),
+				sphere_direction(i + 1, j, slices, stacks),
+			};
+			struct vec3 p[4], tri_p[3], tri_n[3];
+
+			for (k = 0; k < 4; k++)
+				p[k] = vec3_add_scaled(sp->centre, n[k], sp->radius);
+			/* The quads at the poles have two equal corners: one
+			 * triangle each. */
+			if (j < stacks - 1) {
+				tri_p[0] = p[0], tri_p[1] = p[1], tri_p[2] = p[2];
+				tri_n[0] = n[0], tri_n[1] = n[1], tri_n[2] = n[2];
+				if ((rc = mesh_add_triangle(out, tri_p, tri_n)) < 0)
+					return rc;
+			}
+			if (j > 0) {
+				tri_p[0] = p[0], tri_p[1] = p[2], tri_p[2] = p[3];
+				tri_n[0] = n[0], tri_n[1] = n[2], tri_n[2] = n[3];
+				if ((rc = mesh_add_triangle(out, tri_p, tri_n)) < 0)
+					return rc;
+			}
+		}
+	}
+	return 0;
 }
 
 const struct shape_ops sphere_ops = {
@@ -81,7 +123,8 @@ const struct shape_ops sphere_ops = {
 	.export_pov = sphere_export_pov,
 	.destroy = sphere_destroy,
 	.bounds = sphere_bounds,
-	.geometry = sphere_geometry,
+	.tessellate = sphere_tessellate,
+	.closed = shape_closed_always,
 };
 
 struct shape *sphere_create(struct vec3 centre, double radius, const struct material *m)

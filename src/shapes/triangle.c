@@ -1,9 +1,12 @@
 /* The triangle, hit from both sides (Moller-Trumbore). */
-#include "alloc.h"
-#include "diag.h"
-#include "parse.h"
-#include "pov.h"
-#include "shape.h"
+#include "base/alloc.h"
+#include "whitted/diag.h"
+#include "whitted/mesh.h"
+#include "whitted/parser.h"
+#include "whitted/pov.h"
+#include "whitted/scene.h"
+#include "shapes/shapes.h"
+#include "whitted/shape.h"
 #include "shapes/solve.h"
 
 /* The normal is not stored: computing it at a hit costs little next to
@@ -87,18 +90,26 @@ static void triangle_destroy(struct shape *s)
 
 static int triangle_parse(struct parser *p, struct shape **out);
 
-static void triangle_geometry(const struct shape *s, struct shape_geometry *out)
+/* One triangle with its face normal; a degenerate one has no area to
+ * draw. */
+static int triangle_tessellate(const struct shape *s, const struct mesh_options *opt,
+			       struct mesh *out)
 {
 	const struct triangle *tr = (const struct triangle *)s;
+	struct vec3 n = triangle_unit_normal(tr);
+	const struct vec3 p[3] = { tr->v0, vec3_add(tr->v0, tr->e1), vec3_add(tr->v0, tr->e2) };
+	const struct vec3 normals[3] = { n, n, n };
 
-	out->kind = RT_SHAPE_TRIANGLE;
-	out->u.triangle.v[0] = tr->v0;
-	out->u.triangle.v[1] = vec3_add(tr->v0, tr->e1);
-	out->u.triangle.v[2] = vec3_add(tr->v0, tr->e2);
+	(void)opt;
+	if (triangle_degenerate(s))
+		return 0;
+	return mesh_add_triangle(out, p, normals);
 }
 
 const struct shape_ops triangle_ops = {
 	.keyword = "triangle",
+	.dialects = RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) |
+		     RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
 	.parse = triangle_parse,
 	.intersect = triangle_intersect,
 	.normal = triangle_normal,
@@ -106,7 +117,7 @@ const struct shape_ops triangle_ops = {
 	.destroy = triangle_destroy,
 	.bounds = triangle_bounds,
 	.degenerate = triangle_degenerate,
-	.geometry = triangle_geometry,
+	.tessellate = triangle_tessellate,
 };
 
 struct shape *triangle_create(struct vec3 a, struct vec3 b, struct vec3 c,

@@ -155,7 +155,7 @@ signal_test() {
 		printf 'old\n' >"$T/sig/big.png"
 		sum=$(cksum <"$T/sig/big.png")
 	fi
-	(cd "$T/sig" && exec "$W" -s 6000 -r 8 -o big.png "$SCENE") >"$T/out" 2>"$T/err" &
+	(cd "$T/sig" && exec "$W" -q -s 6000 -r 8 -o big.png "$SCENE") >"$T/out" 2>"$T/err" &
 	local pid=$!
 	sleep 0.3
 	kill -s "$sig" $pid
@@ -195,7 +195,7 @@ check "HUP under nohup completes" [ "$rc" -eq 0 -a -f "$T/sig/big.png" ]
 # A signal while blocked opening a FIFO that nobody reads: the write is
 # interrupted, and the exit status still says which signal it was.
 rm -rf "$T/ff" && mkdir -p "$T/ff" && mkfifo "$T/ff/out.ppm"
-(cd "$T/ff" && exec "$W" -s 8 -o out.ppm "$SCENE") >"$T/out" 2>"$T/err" &
+(cd "$T/ff" && exec "$W" -q -s 8 -o out.ppm "$SCENE") >"$T/out" 2>"$T/err" &
 pid=$!
 sleep 0.5
 kill -s TERM $pid

@@ -3,13 +3,19 @@
  * with recursion at most 3, so that every stage that reads parsed values
  * runs on them.  Diagnostics are formatted to check that they stay well
  * formed (NUL-terminated, within the buffer). */
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
-#include "camera.h"
-#include "diag.h"
-#include "image.h"
-#include "render.h"
-#include "scene.h"
+#include "plugin/loader.h"
+
+#include "scene/scene_impl.h"
+#include "whitted/scenefile.h"
+#include "whitted/camera.h"
+#include "whitted/diag.h"
+#include "whitted/image.h"
+#include "whitted/render.h"
+#include "whitted/scene.h"
 
 #include "harness.h"
 
@@ -23,6 +29,18 @@ static void fuzz_check_diag(const struct diag *d)
 	diag_format(d, "whitted", "error", line, sizeof(line));
 	if (strlen(line) >= sizeof(line) || memchr(d->msg, '\n', strlen(d->msg)))
 		__builtin_trap();
+}
+
+int fuzz_init(void)
+{
+	struct diag d;
+
+	diag_clear(&d);
+	if (plugin_load_dirs(getenv("WHITTED_PLUGIN_PATH"), NULL, NULL, &d) < 0) {
+		fprintf(stderr, "fuzz: %s\n", d.msg);
+		return -1;
+	}
+	return 0;
 }
 
 static void fuzz_note(void *ctx, const struct diag *note)
@@ -42,20 +60,18 @@ static void fuzz_render(struct scene *s)
 	diag_clear(&d);
 	if (s->recursion > FUZZ_RECURSION)
 		s->recursion = FUZZ_RECURSION;
-	if (scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d) < 0 ||
-	    scene_prepare(s, 1, &d) < 0)
+	/* The floor and the camera of the file's dialect, as the tools use
+	 * them. */
+	if (scene_add_view_floor(s, &d) < 0 || scene_prepare(s, 1, &d) < 0)
 		return;
 	camera_params_default(&cp);
+	cp.fov_deg = scene_view_of(s)->fov_deg;
+	cp.near = scene_view_of(s)->near;
+	cp.aspect = scene_view_of(s)->aspect;
 	if (camera_init(&cam, &cp, FUZZ_IMAGE, &d) < 0 ||
 	    image_alloc(&img, FUZZ_IMAGE, FUZZ_IMAGE, &d) < 0)
 		return;
-	memset(&job, 0, sizeof(job));
-	job.scene = s;
-	job.camera = &cam;
-	job.settings.recursion = s->recursion;
-	job.settings.clamp = RT_CLAMP_LEVEL;
-	job.threads = 1;
-	job.x1 = job.y1 = FUZZ_IMAGE;
+	render_job_init(&job, s, &cam, 1);
 	if (render_image(&job, &img, NULL, &d) < 0)
 		fuzz_check_diag(&d);
 	image_free(&img);

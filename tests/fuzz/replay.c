@@ -12,8 +12,17 @@
 #include <unistd.h>
 
 #include "harness.h"
+#include "plugin/loader.h"
+
+/* The harness replayed: the scene parser's, or another (-DRT_FUZZ_TARGET=fuzz_image_one). */
+#ifndef RT_FUZZ_TARGET
+#define RT_FUZZ_TARGET fuzz_scene_one
+#define RT_FUZZ_PLUGINS 1	/* the scene harness loads the plugins first */
+#endif
 
 static int passed, failed;
+/* Seeds named plugin-*: they need the example plugins loaded. */
+static int plugin_seeds;
 
 static int replay_read(const char *path, unsigned char **out, size_t *out_len)
 {
@@ -49,8 +58,12 @@ static int replay_read(const char *path, unsigned char **out, size_t *out_len)
 
 static void replay_file(const char *path)
 {
+	const char *base = strrchr(path, '/');
 	int status;
 	pid_t pid;
+
+	if (strncmp(base ? base + 1 : path, "plugin-", 7) == 0)
+		plugin_seeds++;
 
 	fflush(NULL);
 	pid = fork();
@@ -66,7 +79,7 @@ static void replay_file(const char *path)
 			perror(path);
 			_exit(3);
 		}
-		fuzz_scene_one(data, len);
+		RT_FUZZ_TARGET(data, len);
 		free(data);
 		_exit(0);
 	}
@@ -128,12 +141,23 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: fuzz_replay FILE|DIR...\n");
 		return 2;
 	}
+#ifdef RT_FUZZ_PLUGINS
+	if (fuzz_init() < 0)
+		return 1;
+	printf("fuzz-replay: %zu plugins loaded\n", plugin_count());
+#endif
 	for (i = 1; i < argc; i++) {
 		struct stat st;
 		if (stat(argv[i], &st) == 0 && S_ISDIR(st.st_mode))
 			replay_dir(argv[i]);
 		else
 			replay_file(argv[i]);
+	}
+	/* Without the plugins, their seeds only reach "unknown object". */
+	if (plugin_seeds > 0 && plugin_count() == 0) {
+		printf("fuzz-replay: %d plugin-* seeds but no plugin loaded (set WHITTED_PLUGIN_PATH, e.g. to build/plugins)\n",
+		       plugin_seeds);
+		failed++;
 	}
 	printf("fuzz-replay: %d passed, %d failed\n", passed, failed);
 	return failed == 0 && passed > 0 ? 0 : 1;

@@ -2,6 +2,8 @@
  *   imgfilter gamma G IN OUT.png     v' = 255 (v / 255)^(1 / G), rounded
  *   imgfilter gama1 IN OUT.png       the same samples, tagged with gAMA 1.0
  *   imgfilter poke X Y DELTA IN OUT.png   one pixel's channels moved by DELTA
+ *   imgfilter box N IN OUT.png       reduced N times by N x N box averaging:
+ *                                    each channel the rounded mean of its block
  * Exit status 0, 1 on an I/O error, 2 on a bad command line. */
 #include <math.h>
 #include <stdio.h>
@@ -12,7 +14,7 @@
 
 static int bad_usage(void)
 {
-	fprintf(stderr, "usage: imgfilter gamma G IN OUT | gama1 IN OUT | poke X Y DELTA IN OUT\n");
+	fprintf(stderr, "usage: imgfilter gamma G IN OUT | gama1 IN OUT | poke X Y DELTA IN OUT | box N IN OUT\n");
 	return 2;
 }
 
@@ -37,6 +39,9 @@ int main(int argc, char **argv)
 		in = argv[2];
 		out = argv[3];
 		gama1 = true;
+	} else if (argc == 5 && strcmp(argv[1], "box") == 0) {
+		in = argv[3];
+		out = argv[4];
 	} else if (argc == 7 && strcmp(argv[1], "poke") == 0) {
 		in = argv[5];
 		out = argv[6];
@@ -48,7 +53,29 @@ int main(int argc, char **argv)
 		return 1;
 	}
 	n = (size_t)img.width * (size_t)img.height * 3;
-	if (strcmp(argv[1], "gamma") == 0) {
+	if (strcmp(argv[1], "box") == 0) {
+		int f = atoi(argv[2]), w = img.width, x, y, k, dx, dy;
+		if (f < 1 || img.width % f || img.height % f) {
+			fprintf(stderr, "imgfilter: %s: %dx%d is not a multiple of %s\n", in,
+				img.width, img.height, argv[2]);
+			imgio_free(&img);
+			return 2;
+		}
+		/* In place: block (x, y) is read only after every block before it. */
+		for (y = 0; y < img.height / f; y++)
+			for (x = 0; x < w / f; x++)
+				for (k = 0; k < 3; k++) {
+					long sum = 0;
+					for (dy = 0; dy < f; dy++)
+						for (dx = 0; dx < f; dx++)
+							sum += img.rgb[((size_t)(y * f + dy) * (size_t)w +
+									(size_t)(x * f + dx)) * 3 + (size_t)k];
+					img.rgb[((size_t)y * (size_t)(w / f) + (size_t)x) * 3 + (size_t)k] =
+						(uint8_t)((2 * sum + f * f) / (2 * f * f));
+				}
+		img.width /= f;
+		img.height /= f;
+	} else if (strcmp(argv[1], "gamma") == 0) {
 		double g = atof(argv[2]);
 		if (!(g > 0.0)) {
 			imgio_free(&img);

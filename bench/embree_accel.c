@@ -1,0 +1,254 @@
+/* Embree 3 as whitted's hierarchy, for the benchmark's reference: this
+ * file defines the functions of src/accel/accel.h, and build/whitted-embree
+ * is whitted linked with it in place of src/accel/ (Makefile), so that the
+ * scene reader, camera, shading, threads and image writing are whitted's
+ * own and only the hierarchy differs.  The bounded shapes are one Embree
+ * user geometry (the "user geometry" layout: Embree's own BVH over boxes
+ * from whitted's shape_bounds, padded outwards so that the float origin
+ * and traversal cannot lose a hit); for each candidate Embree calls back
+ * into whitted's double-precision shape_intersect, which keeps the nearest
+ * hit in (t_min, t) exactly as whitted's traversal does, and Embree's
+ * float tfar follows it (rounded up) to cull what lies beyond.  Unbounded
+ * shapes are tested first, as in whitted.  Of two shapes hit at exactly the
+ * same distance, the first tested wins; Embree's order may differ from
+ * whitted's there, so bench.sh compares the images and says so. */
+#define _POSIX_C_SOURCE 200809L
+#include <embree3/rtcore.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "base/alloc.h"
+#include "whitted/aabb.h"
+
+struct accel {
+	RTCDevice device;
+	RTCScene scene;
+	const struct shape **bounded;
+	unsigned n_bounded;
+	const struct shape **unbounded;
+	size_t n_unbounded;
+};
+
+/* What the callbacks need of a query: Embree hands back the context. */
+struct query {
+	struct RTCIntersectContext base;	/* first: args->context points here */
+	const struct ray *r;
+	double t_min, t;
+	const struct shape *hit;
+	bool blocked;
+};
+
+static float pad_down(double v)
+{
+	double p = v - 1e-5 * (1.0 + fabs(v));
+	float f = (float)p;
+	return (double)f > p ? nextafterf(f, -INFINITY) : f;
+}
+
+static float pad_up(double v)
+{
+	double p = v + 1e-5 * (1.0 + fabs(v));
+	float f = (float)p;
+	return (double)f < p ? nextafterf(f, INFINITY) : f;
+}
+
+static void embree_bounds(const struct RTCBoundsFunctionArguments *args)
+{
+	const struct accel *a = args->geometryUserPtr;
+	struct aabb box;
+
+	shape_bounds(a->bounded[args->primID], &box);
+	args->bounds_o->lower_x = pad_down(box.min.x);
+	args->bounds_o->lower_y = pad_down(box.min.y);
+	args->bounds_o->lower_z = pad_down(box.min.z);
+	args->bounds_o->upper_x = pad_up(box.max.x);
+	args->bounds_o->upper_y = pad_up(box.max.y);
+	args->bounds_o->upper_z = pad_up(box.max.z);
+}
+
+/* Embree's single-ray layout: tfar is the ninth float. */
+static float *ray_tfar(void *rayn)
+{
+	return (float *)rayn + 8;
+}
+
+static void embree_intersect(const struct RTCIntersectFunctionNArguments *args)
+{
+	const struct accel *a = args->geometryUserPtr;
+	struct query *q = (struct query *)(void *)args->context;
+	const struct shape *sh = a->bounded[args->primID];
+
+	if (!args->valid[0])
+		return;
+	if (shape_intersect(sh, q->r, q->t_min, &q->t)) {
+		q->hit = sh;
+		*ray_tfar(args->rayhit) = pad_up(q->t);
+	}
+}
+
+static void embree_occluded(const struct RTCOccludedFunctionNArguments *args)
+{
+	const struct accel *a = args->geometryUserPtr;
+	struct query *q = (struct query *)(void *)args->context;
+	double t = q->t;
+
+	if (!args->valid[0])
+		return;
+	if (shape_intersect(a->bounded[args->primID], q->r, q->t_min, &t)) {
+		q->blocked = true;
+		*ray_tfar(args->ray) = -INFINITY;
+	}
+}
+
+int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struct accel **out,
+		struct diag *d)
+{
+	struct accel *a = rt_calloc(1, sizeof(*a));
+	char config[32];
+	size_t i;
+
+	*out = NULL;
+	if (!a)
+		return diag_fail(d, RT_E_NOMEM, "out of memory building the scene's hierarchy");
+	a->bounded = rt_reallocarray(NULL, n_shapes + 1, sizeof(*a->bounded));
+	a->unbounded = rt_reallocarray(NULL, n_shapes + 1, sizeof(*a->unbounded));
+	if (!a->bounded || !a->unbounded) {
+		accel_destroy(a);
+		return diag_fail(d, RT_E_NOMEM, "out of memory building the scene's hierarchy");
+	}
+	for (i = 0; i < n_shapes; i++) {
+		struct aabb box;
+		if (shape_bounds(shapes[i], &box))
+			a->bounded[a->n_bounded++] = shapes[i];
+		else
+			a->unbounded[a->n_unbounded++] = shapes[i];
+	}
+	snprintf(config, sizeof(config), "threads=%d", threads);
+	a->device = rtcNewDevice(config);
+	if (!a->device) {
+		accel_destroy(a);
+		return diag_fail(d, RT_E_NOMEM, "Embree: no device");
+	}
+	a->scene = rtcNewScene(a->device);
+	if (a->n_bounded > 0) {
+		RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
+		rtcSetGeometryUserPrimitiveCount(g, a->n_bounded);
+		rtcSetGeometryUserData(g, a);
+		rtcSetGeometryBoundsFunction(g, embree_bounds, NULL);
+		rtcSetGeometryIntersectFunction(g, embree_intersect);
+		rtcSetGeometryOccludedFunction(g, embree_occluded);
+		rtcCommitGeometry(g);
+		rtcAttachGeometry(a->scene, g);
+		rtcReleaseGeometry(g);
+	}
+	rtcCommitScene(a->scene);
+	if (rtcGetDeviceError(a->device) != RTC_ERROR_NONE) {
+		accel_destroy(a);
+		return diag_fail(d, RT_E_NOMEM, "Embree failed to build the scene");
+	}
+	*out = a;
+	return 0;
+}
+
+void accel_destroy(struct accel *a)
+{
+	if (!a)
+		return;
+	if (a->scene)
+		rtcReleaseScene(a->scene);
+	if (a->device)
+		rtcReleaseDevice(a->device);
+	rt_free(a->bounded);
+	rt_free(a->unbounded);
+	rt_free(a);
+}
+
+static void query_ray(struct RTCRay *er, const struct ray *r, double t_max)
+{
+	er->org_x = (float)r->origin.x;
+	er->org_y = (float)r->origin.y;
+	er->org_z = (float)r->origin.z;
+	er->dir_x = (float)r->dir.x;
+	er->dir_y = (float)r->dir.y;
+	er->dir_z = (float)r->dir.z;
+	/* The exact interval is the callbacks' business: Embree's only culls. */
+	er->tnear = 0.0f;
+	er->tfar = t_max == INFINITY ? INFINITY : pad_up(t_max);
+	er->time = 0.0f;
+	er->mask = UINT32_MAX;
+	er->id = 0;
+	er->flags = 0;
+}
+
+const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
+				    double t_min, double *t_max)
+{
+	const struct shape *hit = NULL;
+	struct RTCRayHit rh;
+	struct query q;
+	size_t i;
+
+	for (i = 0; i < a->n_unbounded; i++)
+		if (shape_intersect(a->unbounded[i], r, t_min, t_max))
+			hit = a->unbounded[i];
+	if (a->n_bounded == 0)
+		return hit;
+	rtcInitIntersectContext(&q.base);
+	q.r = r;
+	q.t_min = t_min;
+	q.t = *t_max;
+	q.hit = NULL;
+	memset(&rh, 0, sizeof(rh));
+	query_ray(&rh.ray, r, *t_max);
+	rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+	rtcIntersect1(a->scene, &q.base, &rh);
+	if (q.hit) {
+		*t_max = q.t;
+		hit = q.hit;
+	}
+	return hit;
+}
+
+bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
+{
+	struct RTCRay er;
+	struct query q;
+	size_t i;
+
+	for (i = 0; i < a->n_unbounded; i++) {
+		double t = t_max;
+		if (shape_intersect(a->unbounded[i], r, t_min, &t))
+			return true;
+	}
+	if (a->n_bounded == 0)
+		return false;
+	rtcInitIntersectContext(&q.base);
+	q.r = r;
+	q.t_min = t_min;
+	q.t = t_max;
+	q.blocked = false;
+	query_ray(&er, r, t_max);
+	rtcOccluded1(a->scene, &q.base, &er);
+	return q.blocked;
+}
+
+size_t accel_node_count(const struct accel *a)
+{
+	(void)a;
+	return 0;
+}
+
+const char *accel_walk_name(const struct accel *a)
+{
+	(void)a;
+	return "embree";
+}
+
+size_t accel_bytes(const struct accel *a)
+{
+	(void)a;
+	return 0;
+}

@@ -1,0 +1,55 @@
+/* A pinhole camera: eye, look-at point, up vector and vertical field of
+ * view, one ray through the centre of each pixel of a square image.  The
+ * nearfar dialect adds an image plane at a distance NEAR in front of the
+ * eye, where primary rays start, and a horizontal field of view ASPECT
+ * times the vertical one (scene-format.md, "Dialect nearfar"). */
+#ifndef RT_CAMERA_H
+#define RT_CAMERA_H
+
+#include "diag.h"
+#include "ray.h"
+#include "vec3.h"
+
+/* The assignment's test set-up. */
+#define RT_CAMERA_EYE vec3_make(0.0, -200.0, 10.0)
+#define RT_CAMERA_LOOK vec3_make(0.0, 0.0, 0.0)
+#define RT_CAMERA_UP vec3_make(0.0, 0.0, 1.0)
+#define RT_CAMERA_FOV 80.0
+
+struct camera_params {
+	struct vec3 eye, look, up;
+	double fov_deg;			/* vertical, in (0, 180) */
+	double near;			/* >= 0; 0: rays start at the eye */
+	double aspect;			/* >= 0; 0: the horizontal field of view is fov_deg,
+					 * else aspect * fov_deg (< 180) */
+};
+
+struct camera {
+	struct vec3 eye;
+	struct vec3 forward, right, up;	/* orthonormal, right = forward x up */
+	double half_height;		/* tan(fov / 2) */
+	double pixel_scale;		/* 2 half_height / size: a pixel's height at distance 1 */
+	int size;			/* pixels per side */
+	double half_width;		/* tan(fovx / 2); half_height when aspect is 0 */
+	double pixel_scale_x;		/* 2 half_width / size: a pixel's width at distance 1 */
+	double near;			/* the image plane's distance; 0: rays start at the eye */
+};
+
+void camera_params_default(struct camera_params *p);
+/* Fails with RT_E_INVALID when the eye is at the look-at point, the up
+ * vector is zero or parallel to the view, the field of view (or aspect
+ * times it) is outside (0, 180) degrees, or near or aspect is negative or
+ * not finite. */
+int camera_init(struct camera *c, const struct camera_params *p, int size, struct diag *d);
+/* The unit-direction ray through the centre of pixel (px, py); py = 0 is the
+ * top row.  It starts at the eye, or with near > 0 at the pixel's centre on
+ * the image plane: eye + near (forward + u right + v up), where the plane
+ * spans 2 near half_width by 2 near half_height. */
+struct ray camera_ray(const struct camera *c, int px, int py);
+/* The ray through the point (x, y) of the image, in pixels from its top
+ * left corner: camera_ray(c, px, py) is the ray through (px + 0.5, py + 0.5)
+ * (to within rounding; camera_ray keeps its own arithmetic so that one
+ * sample per pixel keeps every bit).  For --samples. */
+struct ray camera_ray_at(const struct camera *c, double x, double y);
+
+#endif

@@ -1,0 +1,38 @@
+/* Reading scene files (scene-format.md) into a scene. */
+#ifndef RT_SCENEFILE_H
+#define RT_SCENEFILE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "diag.h"
+#include "scene.h"
+
+/* How to read scene text; NULL means one thread and no hash. */
+struct scene_read_options {
+	/* At least 1: a big file's objects are read by up to this many
+	 * threads.  The scene, its notes and its errors are the same for any
+	 * number. */
+	int threads;
+	/* Fill the source hash (a multiplication a byte, so only when wanted). */
+	bool hash;
+	/* RT_DIALECT_AUTO (0) detects the dialect from the text (see
+	 * docs/scene-format.md); any other value reads the file as that one. */
+	enum scene_dialect dialect;
+};
+
+/* Parses scene text; name is used in diagnostics.  Adds no floor (the
+ * scene's view says which floor the file's dialect has: scene_view_of and
+ * scene_add_view_floor).  A note says which dialect was read. */
+int scene_parse(const char *name, const char *text, size_t len,
+		const struct scene_read_options *opt, diag_note_fn *note, void *note_ctx,
+		struct scene **out, struct diag *d);
+/* Reads and parses a file ("-": standard input). */
+int scene_load(const char *path, const struct scene_read_options *opt,
+	       diag_note_fn *note, void *note_ctx, struct scene **out, struct diag *d);
+
+/* The assignment's built-in test scene (a red sphere and a white light),
+ * read like a file (with its hash, for tiles). */
+int scene_test_scene(struct scene **out, struct diag *d);
+
+#endif

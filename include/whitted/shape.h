@@ -1,0 +1,143 @@
+/* The primitive interface.  Each primitive is one file under src/shapes/
+ * that fills in a static const struct shape_ops; the registry maps scene
+ * keywords to tables.  Outside src/shapes/ only the wrappers below call
+ * through the table, so the NULL checks for optional members live there. */
+#ifndef RT_SHAPE_H
+#define RT_SHAPE_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "aabb.h"
+#include "material.h"
+#include "ray.h"
+
+struct mesh;
+struct mesh_options;
+struct parser;
+struct shape;
+struct pov_options;
+
+struct shape_ops {
+	const char *keyword;	/* scene-file keyword, unique within each dialect */
+	/* The dialects whose files name this keyword: a mask of
+	 * RT_DIALECT_BIT(d) for d of enum scene_dialect (whitted/scene.h).
+	 * 0: every dialect (plugins, and any table that does not say).  Two
+	 * tables may share a keyword when their masks are disjoint (the
+	 * pyramid's two placements). */
+	unsigned dialects;
+
+	/* Reads the geometry and material after the keyword.  Returns 0 with a
+	 * whole shape in *out, or a negative enum rt_err with *out NULL and the
+	 * parser's diagnostic filled in. */
+	int (*parse)(struct parser *p, struct shape **out);
+	/* Nearest hit with t in (t_min, *t_max); on a hit shrinks *t_max to it.
+	 * The direction need not be unit length. */
+	bool (*intersect)(const struct shape *s, const struct ray *r,
+			  double t_min, double *t_max);
+	/* Unit normal at a point on the surface, in world space (either side). */
+	struct vec3 (*normal)(const struct shape *s, struct vec3 p);
+	/* Writes the shape, with its texture, as one POV-Ray object. */
+	int (*export_pov)(const struct shape *s, FILE *out,
+			  const struct pov_options *opt);
+	void (*destroy)(struct shape *s);
+
+	/* Optional.  NULL: the material colour everywhere. */
+	struct color (*color_at)(const struct shape *s, struct vec3 p);
+	/* Optional.  NULL or false: the shape is unbounded.  The wrapper
+	 * starts *out at -inf .. inf on every axis, so that an unbounded shape
+	 * can still give the axes it is bounded along (a quadric clipped on
+	 * some axes only) and leave the others. */
+	bool (*bounds)(const struct shape *s, struct aabb *out);
+	/* Optional.  A line for the scene's notes when the shape can never be
+	 * seen (a degenerate triangle); NULL when it is fine. */
+	const char *(*degenerate)(const struct shape *s);
+	/* Optional.  Appends the shape's triangles to out (see mesh.h), an
+	 * unbounded one's inside opt->around.  0 or -RT_E_NOMEM.  NULL: the
+	 * shape is meshed as its bounding box, and not at all if unbounded. */
+	int (*tessellate)(const struct shape *s, const struct mesh_options *opt,
+			  struct mesh *out);
+	/* Optional.  When the specular highlight's colour at p is not
+	 * color_at's (a textured floor: the texel colours the ambient and
+	 * diffuse terms, the highlight keeps the cell's colour), stores it in
+	 * *out and returns true.  NULL or false: color_at's. */
+	bool (*specular_color_at)(const struct shape *s, struct vec3 p, struct color *out);
+	/* Optional.  True when the surface bounds a solid (every ray that
+	 * enters it leaves it), so that refraction through it as glass is
+	 * exact: the sphere, the cube, the pyramid, a quadric that is a whole
+	 * ellipsoid inside its clip box.  NULL or false: not known to be
+	 * closed (a triangle, an open or clipped quadric), which --glass
+	 * accepts with a note. */
+	bool (*closed)(const struct shape *s);
+};
+
+struct shape {
+	const struct shape_ops *ops;
+	struct material mat;
+};
+
+static inline bool shape_intersect(const struct shape *s, const struct ray *r,
+				   double t_min, double *t_max)
+{
+	return s->ops->intersect(s, r, t_min, t_max);
+}
+
+static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
+{
+	return s->ops->normal(s, p);
+}
+
+/* Inline, as it runs at every hit; the default for a NULL color_at is
+ * still written only here. */
+static inline struct color shape_color_at(const struct shape *s, struct vec3 p)
+{
+	return s->ops->color_at ? s->ops->color_at(s, p) : s->mat.color;
+}
+
+/* See specular_color_at: false (and *out untouched) for the usual shape. */
+static inline bool shape_specular_color_at(const struct shape *s, struct vec3 p,
+					   struct color *out)
+{
+	return s->ops->specular_color_at && s->ops->specular_color_at(s, p, out);
+}
+
+/* True when the colour varies over the surface (color_at is set): such a
+ * shape's POV-Ray export carries its own texture for the global lights. */
+bool shape_is_textured(const struct shape *s);
+/* True when bounded; false leaves -inf .. inf on the axes it is not
+ * bounded along (every axis, for most unbounded shapes). */
+bool shape_bounds(const struct shape *s, struct aabb *out);
+const char *shape_degenerate(const struct shape *s);
+/* See closed: false when the table has none. */
+bool shape_closed(const struct shape *s);
+/* True when the primitive makes its own mesh; false when shape_tessellate
+ * gives its bounding box (or nothing, if it is unbounded) instead. */
+bool shape_tessellates(const struct shape *s);
+int shape_tessellate(const struct shape *s, const struct mesh_options *opt, struct mesh *out);
+int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt);
+void shape_destroy(struct shape *s);
+
+/* The registry: the table for a scene keyword (len bytes, not
+ * NUL-terminated), or NULL; the first registered table of that keyword,
+ * whatever its dialects. */
+const struct shape_ops *shape_ops_find(const char *keyword, size_t len);
+/* The table for a keyword among those whose mask meets `dialects` (a mask
+ * of RT_DIALECT_BIT(d); a table of mask 0 meets every one, and dialects 0
+ * means any table: shape_ops_find), or NULL. */
+const struct shape_ops *shape_ops_find_in(const char *keyword, size_t len, unsigned dialects);
+/* The registered tables in order, NULL-terminated: the built-in ones,
+ * then those of the plugins loaded (whitted/plugin.h).  Plugins are loaded
+ * before any scene is read; the array and the lists below are not to be
+ * read while one is being loaded. */
+const struct shape_ops *const *shape_ops_all(void);
+/* The keywords of every table, each once, in the registry's order:
+ * "sphere, triangle, general, pyramid, cube", for error messages. */
+const char *shape_keywords(void);
+/* The same, of the tables shape_ops_find_in finds for `dialects` (0:
+ * shape_keywords()): "sphere, triangle, general, pyramid" for the pyramid
+ * dialect.  The lists are static, built for every mask of the dialects of
+ * enum scene_dialect when tables are registered (thread-safe); bits above
+ * the last dialect's are ignored here and in shape_ops_find_in. */
+const char *shape_keywords_in(unsigned dialects);
+
+#endif

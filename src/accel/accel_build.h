@@ -1,0 +1,61 @@
+/* What the hierarchy's build (accel_build.c: the tree, its threads, its
+ * nodes) shares with the split search (accel_split.c: boxes, the binned
+ * surface area heuristic, the partition); private to the two. */
+#ifndef RT_ACCEL_BUILD_H
+#define RT_ACCEL_BUILD_H
+
+#include <stddef.h>
+
+#include "accel/accel_tree.h"
+
+/* A shape being sorted into the tree: its box and the shape.  The centre
+ * that the heuristic sorts by is computed from the box when needed rather
+ * than stored, which keeps a reference at 56 bytes (the build's memory
+ * peak is the references and the nodes together). */
+struct build_ref {
+	double lo[3], hi[3];
+	const struct shape *shape;
+};
+
+
+/* The bounds of a set of refs and of their centres.  Comparisons rather
+ * than fmin and fmax, which are library calls here: the boxes are finite,
+ * so the values are the same. */
+struct build_box {
+	double lo[3], hi[3];
+};
+
+
+#define ACCEL_BINS 16
+
+struct sah_bin {
+	struct build_box box;	/* empty while no ref falls in the bin */
+	size_t n;
+};
+
+/* A thread's bins for the split search, empty (every box empty, every
+ * count 0) between searches: a search empties only the bins it used, so a
+ * small node does not pay for clearing all 48. */
+struct accel_bins {
+	struct sah_bin bin[3][ACCEL_BINS];
+};
+
+void accel_bins_init(struct accel_bins *bins);
+
+/* The box and the centre bounds of refs[0, n). */
+void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box *box,
+		 struct build_box *centres);
+/* box and centres grown by refs[0, n) in order, as accel_refs_bounds
+ * grows them: the bounds of a set met in parts, the same to the bit. */
+void accel_refs_bounds_grow(const struct build_ref *refs, size_t n, struct build_box *box,
+			    struct build_box *centres);
+/* Where to split refs[0, n), whose box and centre bounds are given
+ * (sorting them so), or 0 to make them a leaf; bounds receives the box
+ * and centre bounds of both parts. */
+size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
+		    const struct build_box *centres, struct build_box bounds[4],
+		    struct accel_bins *bins);
+/* Child c's box in the node, rounded outwards to floats. */
+void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *box);
+
+#endif

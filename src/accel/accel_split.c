@@ -1,0 +1,473 @@
+/* Where the hierarchy's build splits a node: a 16-bin surface area
+ * heuristic over the refs' centres, the partition it implies (with the
+ * bounds of both parts, in the same pass), a median split past the depth
+ * where the heuristic stops, and the outward rounding of boxes to the
+ * floats that nodes store. */
+#include <assert.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/accel_build.h"
+
+
+static inline double ref_centre(const struct build_ref *r, int axis)
+{
+	return (r->lo[axis] + r->hi[axis]) * 0.5;
+}
+
+static double box_area(const struct build_box *b)
+{
+	double ex = b->hi[0] - b->lo[0], ey = b->hi[1] - b->lo[1], ez = b->hi[2] - b->lo[2];
+
+	return 2.0 * (ex * ey + ey * ez + ez * ex);
+}
+
+static void box_empty(struct build_box *b)
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		b->lo[k] = INFINITY;
+		b->hi[k] = -INFINITY;
+	}
+}
+
+/* The box code copies a ref's or a box's bounds as six doubles in a row. */
+typedef char build_ref_bounds_in_a_row[offsetof(struct build_ref, hi) == 3 * sizeof(double) ? 1 : -1];
+typedef char build_box_bounds_in_a_row[offsetof(struct build_box, hi) == 3 * sizeof(double) ? 1 : -1];
+
+/* b grows to take in the box that src begins with (a ref or a build_box:
+ * its minima then its maxima, six doubles in a row, copied out).  With SSE2 that is three
+ * two-lane operations; MINPD and MAXPD give their first operand where the
+ * comparison holds and the second otherwise, as the plain C does, so the
+ * tree is the same either way. */
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+#include <emmintrin.h>
+
+static inline void box_grow_by(struct build_box *b, const void *src)
+{
+	double v[6], d[6];
+	__m128d lo01, lo2hi0, hi12, b2;
+
+	memcpy(v, src, sizeof(v));
+	memcpy(d, b, sizeof(d));
+	lo01 = _mm_loadu_pd(v);
+	lo2hi0 = _mm_loadu_pd(v + 2);
+	hi12 = _mm_loadu_pd(v + 4);
+	b2 = _mm_loadu_pd(d + 2);
+	_mm_storeu_pd(d, _mm_min_pd(lo01, _mm_loadu_pd(d)));
+	_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(lo2hi0, b2), _mm_min_pd(lo2hi0, b2)));
+	_mm_storeu_pd(d + 4, _mm_max_pd(hi12, _mm_loadu_pd(d + 4)));
+	memcpy(b, d, sizeof(d));
+}
+#else
+static inline void box_grow_by(struct build_box *b, const void *src)
+{
+	double v[6];
+	const double *lo = v, *hi = v + 3;
+
+	memcpy(v, src, sizeof(v));
+
+	/* Written out per axis: -O2 does not unroll the loop, and its
+	 * control was a third of the binning's work. */
+	b->lo[0] = lo[0] < b->lo[0] ? lo[0] : b->lo[0];
+	b->lo[1] = lo[1] < b->lo[1] ? lo[1] : b->lo[1];
+	b->lo[2] = lo[2] < b->lo[2] ? lo[2] : b->lo[2];
+	b->hi[0] = hi[0] > b->hi[0] ? hi[0] : b->hi[0];
+	b->hi[1] = hi[1] > b->hi[1] ? hi[1] : b->hi[1];
+	b->hi[2] = hi[2] > b->hi[2] ? hi[2] : b->hi[2];
+}
+#endif
+
+static inline void box_grow_ref(struct build_box *b, const struct build_ref *r)
+{
+	box_grow_by(b, r);
+}
+
+static inline void box_grow(struct build_box *b, const struct build_box *o)
+{
+	box_grow_by(b, o);
+}
+
+/* The float next to f towards +inf (up) or -inf, as nextafterf gives it
+ * (a library call, and these run twelve times a node): one step of the
+ * bit pattern, which orders floats of one sign by magnitude.  An
+ * infinity steps to the largest finite float. */
+static inline float float_step(float f, bool up)
+{
+	uint32_t u;
+
+	if (f == 0.0f)
+		u = up ? 0x00000001u : 0x80000001u;
+	else {
+		memcpy(&u, &f, sizeof(u));
+		u = (f > 0.0f) == up ? u + 1 : u - 1;
+	}
+	memcpy(&f, &u, sizeof(f));
+	return f;
+}
+
+static inline float float_down(double v)
+{
+	float f = (float)v;
+	return (double)f > v ? float_step(f, false) : f;
+}
+
+static inline float float_up(double v)
+{
+	float f = (float)v;
+	return (double)f < v ? float_step(f, true) : f;
+}
+
+/* box and centres grow to take in ref r and its centre. */
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+/* The centres two lanes at a time: MINPD (c, lo) is the plain C's
+ * c < lo ? c : lo, MAXPD (c, hi) its c > hi ? c : hi. */
+static inline void bounds_add_ref(struct build_box *box, struct build_box *centres,
+				  const struct build_ref *r)
+{
+	const __m128d half = _mm_set1_pd(0.5);
+	__m128d lo01 = _mm_loadu_pd(r->lo), hi01 = _mm_loadu_pd(r->hi);
+	__m128d c01 = _mm_mul_pd(_mm_add_pd(lo01, hi01), half);
+	__m128d c2 = _mm_mul_sd(_mm_add_sd(_mm_load_sd(&r->lo[2]), _mm_load_sd(&r->hi[2])), half);
+
+	box_grow_ref(box, r);
+	_mm_storeu_pd(centres->lo, _mm_min_pd(c01, _mm_loadu_pd(centres->lo)));
+	_mm_storeu_pd(centres->hi, _mm_max_pd(c01, _mm_loadu_pd(centres->hi)));
+	_mm_store_sd(&centres->lo[2], _mm_min_sd(c2, _mm_load_sd(&centres->lo[2])));
+	_mm_store_sd(&centres->hi[2], _mm_max_sd(c2, _mm_load_sd(&centres->hi[2])));
+}
+#else
+static inline void bounds_add_ref(struct build_box *box, struct build_box *centres,
+				  const struct build_ref *r)
+{
+	int k;
+
+	box_grow_ref(box, r);
+	for (k = 0; k < 3; k++) {
+		double c = ref_centre(r, k);
+		centres->lo[k] = c < centres->lo[k] ? c : centres->lo[k];
+		centres->hi[k] = c > centres->hi[k] ? c : centres->hi[k];
+	}
+}
+#endif
+
+void accel_refs_bounds_grow(const struct build_ref *refs, size_t n, struct build_box *box,
+			    struct build_box *centres)
+{
+	size_t i;
+
+	for (i = 0; i < n; i++)
+		bounds_add_ref(box, centres, &refs[i]);
+}
+
+void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box *box,
+			struct build_box *centres)
+{
+	box_empty(box);
+	box_empty(centres);
+	accel_refs_bounds_grow(refs, n, box, centres);
+}
+
+
+/* Counts refs[0, n) into the (empty) bins of the usable axes, grows each
+ * bin's box by its refs and sets used[axis]'s bit b for each bin b filled.
+ * A bin's box is set by its first ref (the same as growing an empty box by
+ * it). */
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+/* The same bins, with each ref's bounds loaded once for all three axes,
+ * its three centres and bin numbers computed two lanes at a time, and
+ * each bin an empty box so that every ref grows its bin alike (MINPD
+ * of a finite bound and +inf is the bound, as the plain C's copy; the
+ * bins come empty, see struct accel_bins).  The
+ * clamp is bin_of's: MAXPD with 0 gives 0 for a NaN (its second operand)
+ * and for anything below, MINPD with the last bin's number caps it; an
+ * axis that is not usable (its scale 0) fills its bin 0, which nothing
+ * reads. */
+static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
+		     const struct build_box *centres, const double scale[3], const bool usable[3],
+		     unsigned used[3])
+{
+	const __m128d half = _mm_set1_pd(0.5), zero = _mm_setzero_pd();
+	const __m128d last = _mm_set1_pd(ACCEL_BINS - 1);
+	const __m128d lo01 = _mm_loadu_pd(centres->lo), lo2 = _mm_set_sd(centres->lo[2]);
+	const __m128d sc01 = _mm_loadu_pd(scale), sc2 = _mm_set_sd(scale[2]);
+	size_t i;
+	int axis;
+
+	(void)usable;
+	used[0] = used[1] = used[2] = 0;
+	for (i = 0; i < n; i++) {
+		const double *r = refs[i].lo;
+		__m128d a = _mm_loadu_pd(r), m = _mm_loadu_pd(r + 2), h = _mm_loadu_pd(r + 4);
+		__m128d c01 = _mm_mul_pd(_mm_add_pd(a, _mm_loadu_pd(r + 3)), half);
+		__m128d c2 = _mm_mul_sd(_mm_add_sd(m, _mm_unpackhi_pd(h, h)), half);
+		__m128d f01 = _mm_mul_pd(_mm_sub_pd(c01, lo01), sc01);
+		__m128d f2 = _mm_mul_sd(_mm_sub_sd(c2, lo2), sc2);
+		__m128i k01 = _mm_cvttpd_epi32(_mm_min_pd(_mm_max_pd(f01, zero), last));
+		__m128i k2 = _mm_cvttpd_epi32(_mm_min_sd(_mm_max_sd(f2, zero), last));
+		int k[3];
+
+		k[0] = _mm_cvtsi128_si32(k01);
+		k[1] = _mm_cvtsi128_si32(_mm_shuffle_epi32(k01, 1));
+		k[2] = _mm_cvtsi128_si32(k2);
+		used[0] |= 1u << k[0];
+		used[1] |= 1u << k[1];
+		used[2] |= 1u << k[2];
+		for (axis = 0; axis < 3; axis++) {
+			struct sah_bin *bin = &bins[axis][k[axis]];
+			double *d = bin->box.lo;
+			__m128d dm = _mm_loadu_pd(d + 2);
+			bin->n++;
+			_mm_storeu_pd(d, _mm_min_pd(a, _mm_loadu_pd(d)));
+			_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(m, dm), _mm_min_pd(m, dm)));
+			_mm_storeu_pd(d + 4, _mm_max_pd(h, _mm_loadu_pd(d + 4)));
+		}
+	}
+}
+#else
+/* Clamps before converting: with coordinates near DBL_MAX a centre or the
+ * extent can overflow to inf and the product be NaN, and converting that
+ * (or anything outside int) is undefined. */
+static int bin_of(double c, double lo, double scale)
+{
+	double f = (c - lo) * scale;
+
+	if (!(f >= 0.0))
+		return 0;
+	return f >= ACCEL_BINS ? ACCEL_BINS - 1 : (int)f;
+}
+
+static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
+		     const struct build_box *centres, const double scale[3], const bool usable[3],
+		     unsigned used[3])
+{
+	size_t i;
+	int axis, b;
+
+	for (i = 0; i < n; i++) {
+		for (axis = 0; axis < 3; axis++) {
+			struct sah_bin *bin;
+			if (!usable[axis])
+				continue;
+			bin = &bins[axis][bin_of(ref_centre(&refs[i], axis), centres->lo[axis], scale[axis])];
+			if (bin->n++ == 0)
+				memcpy(&bin->box, &refs[i], sizeof(bin->box));
+			else
+				box_grow_ref(&bin->box, &refs[i]);
+		}
+	}
+	for (axis = 0; axis < 3; axis++) {
+		used[axis] = 0;
+		for (b = 0; b < ACCEL_BINS; b++)
+			if (bins[axis][b].n > 0)
+				used[axis] |= 1u << b;
+	}
+}
+#endif
+
+/* The number of the lowest bit set in m (not 0). */
+static inline int lowest_bit(unsigned m)
+{
+#if defined(__GNUC__)
+	return __builtin_ctz(m);
+#else
+	int b = 0;
+
+	while (!(m & 1u)) {
+		m >>= 1;
+		b++;
+	}
+	return b;
+#endif
+}
+
+/* The best cut between the bins of one axis (lo and scale place the bins
+ * along it): when one costs less than *best, sets *best and the cut's
+ * position and returns true. */
+static inline bool sah_sweep(const struct sah_bin bins[ACCEL_BINS], unsigned used_bins,
+			     double lo, double scale, double *best, double *out_pos)
+{
+	struct build_box left, acc;
+	double right_area[ACCEL_BINS];
+	size_t right_n[ACCEL_BINS], left_n = 0;
+	int used[ACCEL_BINS], n_used = 0, j;
+	bool found = false;
+
+	/* Only the bins that hold refs matter (most bins of the many small
+	 * nodes are empty): a cut after an empty bin makes the same halves at
+	 * the same cost as the cut after the last bin before it that holds
+	 * refs, which comes first and wins. */
+	for (; used_bins; used_bins &= used_bins - 1)
+		used[n_used++] = lowest_bit(used_bins);
+	if (n_used < 2)
+		return false;
+	/* Sweep from the right for the right-hand areas and counts of the
+	 * cuts after used[0 .. n_used - 2], then from the left. */
+	acc = bins[used[n_used - 1]].box;
+	right_n[n_used - 2] = bins[used[n_used - 1]].n;
+	right_area[n_used - 2] = box_area(&acc);
+	for (j = n_used - 2; j > 0; j--) {
+		box_grow(&acc, &bins[used[j]].box);
+		right_n[j - 1] = right_n[j] + bins[used[j]].n;
+		right_area[j - 1] = box_area(&acc);
+	}
+	left = bins[used[0]].box;
+	for (j = 0; j < n_used - 1; j++) {
+		double cost;
+		if (j > 0)
+			box_grow(&left, &bins[used[j]].box);
+		left_n += bins[used[j]].n;
+		cost = (double)left_n * box_area(&left) + (double)right_n[j] * right_area[j];
+		if (cost < *best) {
+			*best = cost;
+			found = true;
+			*out_pos = lo + (used[j] + 1) / scale;
+		}
+	}
+	return found;
+}
+
+/* Chooses an axis and a bin boundary by the surface area heuristic: the
+ * cost of a split, relative to its parent's, is n_left area_left +
+ * n_right area_right (a traversal step is cheap next to a shape test, so
+ * it is left out), against n area for a leaf.  All three axes are binned
+ * in one pass over the refs.  Returns false when no split beats a leaf
+ * (or none is possible). */
+static bool sah_split(const struct build_ref *refs, size_t n, const struct build_box *box,
+		      const struct build_box *centres, struct sah_bin bins[3][ACCEL_BINS],
+		      int *out_axis, double *out_pos)
+{
+	double best = (double)n * box_area(box), scale[3];
+	bool found = false, usable[3];
+	unsigned used[3];
+	int axis, b;
+
+	for (axis = 0; axis < 3; axis++) {
+		double extent = centres->hi[axis] - centres->lo[axis];
+		usable[axis] = extent > 0.0;
+		scale[axis] = usable[axis] ? ACCEL_BINS / extent : 0.0;
+	}
+	bin_refs(bins, refs, n, centres, scale, usable, used);
+	for (axis = 0; axis < 3; axis++) {
+		if (usable[axis] && sah_sweep(bins[axis], used[axis], centres->lo[axis], scale[axis], &best, out_pos)) {
+			found = true;
+			*out_axis = axis;
+		}
+	}
+	/* Empty again for the next search. */
+	for (axis = 0; axis < 3; axis++) {
+		for (; used[axis]; used[axis] &= used[axis] - 1) {
+			b = lowest_bit(used[axis]);
+			box_empty(&bins[axis][b].box);
+			bins[axis][b].n = 0;
+		}
+	}
+	return found;
+}
+
+/* Moves the refs whose centre lies below pos along axis to the front and
+ * returns how many there are; bounds receives the box and the centre
+ * bounds of the front part, then of the back part. */
+static size_t partition(struct build_ref *refs, size_t n, int axis, double pos,
+			struct build_box bounds[4])
+{
+	size_t i = 0, j = n;
+
+	box_empty(&bounds[0]);
+	box_empty(&bounds[1]);
+	box_empty(&bounds[2]);
+	box_empty(&bounds[3]);
+	while (i < j) {
+		if (ref_centre(&refs[i], axis) < pos) {
+			bounds_add_ref(&bounds[0], &bounds[1], &refs[i]);
+			i++;
+		} else {
+			struct build_ref tmp = refs[i];
+			bounds_add_ref(&bounds[2], &bounds[3], &tmp);
+			refs[i] = refs[--j];
+			refs[j] = tmp;
+		}
+	}
+	return i;
+}
+
+/* Orders refs by their centre along one axis, for the median split. */
+static int compare_centre_x(const void *a, const void *b)
+{
+	double ca = ref_centre(a, 0), cb = ref_centre(b, 0);
+	return (ca > cb) - (ca < cb);
+}
+
+static int compare_centre_y(const void *a, const void *b)
+{
+	double ca = ref_centre(a, 1), cb = ref_centre(b, 1);
+	return (ca > cb) - (ca < cb);
+}
+
+static int compare_centre_z(const void *a, const void *b)
+{
+	double ca = ref_centre(a, 2), cb = ref_centre(b, 2);
+	return (ca > cb) - (ca < cb);
+}
+
+/* Splits at the median along the widest centre axis, for when the
+ * heuristic gives up on a node that is still too big or the tree is
+ * already deep (rare, so a sort is cheap enough). */
+static size_t median_split(struct build_ref *refs, size_t n, const struct build_box *centres)
+{
+	static int (*const compare[3])(const void *, const void *) = {
+		compare_centre_x, compare_centre_y, compare_centre_z
+	};
+	double ex = centres->hi[0] - centres->lo[0], ey = centres->hi[1] - centres->lo[1];
+	double ez = centres->hi[2] - centres->lo[2];
+	int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+
+	qsort(refs, n, sizeof(*refs), compare[axis]);
+	return n / 2;
+}
+void accel_bins_init(struct accel_bins *bins)
+{
+	int axis, b;
+
+	for (axis = 0; axis < 3; axis++) {
+		for (b = 0; b < ACCEL_BINS; b++) {
+			box_empty(&bins->bin[axis][b].box);
+			bins->bin[axis][b].n = 0;
+		}
+	}
+}
+
+void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *box)
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		node->bounds[0][k][c] = float_down(box->lo[k]);
+		node->bounds[1][k][c] = float_up(box->hi[k]);
+	}
+}
+/* Where to split refs[0, n), whose box and centre bounds are
+ * given (sorting them so), or 0 to make them a leaf; bounds receives the
+ * box and centre bounds of both parts. */
+size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
+		    const struct build_box *centres, struct build_box bounds[4],
+		    struct accel_bins *bins)
+{
+	size_t split = 0;
+	double pos = 0.0;
+	int axis = 0;
+
+	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, box, centres, bins->bin, &axis, &pos))
+		split = partition(refs, n, axis, pos, bounds);
+	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX) {
+		split = median_split(refs, n, centres);
+		accel_refs_bounds(refs, split, &bounds[0], &bounds[1]);
+		accel_refs_bounds(refs + split, n - split, &bounds[2], &bounds[3]);
+	}
+	return split == n ? 0 : split;
+}

@@ -1,0 +1,56 @@
+/* Appending formatted text to a fixed buffer, for the canonical settings
+ * text and the viewer's reproducing command (and its shell quoting). */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/text.h"
+
+void text_init(struct text_buf *t, char *buf, size_t size)
+{
+	t->buf = buf;
+	t->size = size;
+	t->len = 0;
+	t->full = size == 0;
+	if (size > 0)
+		buf[0] = '\0';
+}
+
+void text_printf(struct text_buf *t, const char *fmt, ...)
+{
+	va_list ap;
+	int n;
+
+	if (t->full)
+		return;
+	va_start(ap, fmt);
+	n = vsnprintf(t->buf + t->len, t->size - t->len, fmt, ap);
+	va_end(ap);
+	if (n < 0 || (size_t)n >= t->size - t->len)
+		t->full = true;		/* vsnprintf kept what fitted */
+	else
+		t->len += (size_t)n;
+}
+
+void text_shell_word(struct text_buf *t, const char *s)
+{
+	static const char safe[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+				   "0123456789_./+,=:@%-";
+	const char *p;
+
+	/* A word starting with '-' would be read as an option. */
+	if (s[0] == '-')
+		text_printf(t, "./");
+	if (s[0] != '\0' && s[strspn(s, safe)] == '\0') {
+		text_printf(t, "%s", s);
+		return;
+	}
+	text_printf(t, "'");
+	for (p = s; *p; p++) {
+		if (*p == '\'')
+			text_printf(t, "'\\''");
+		else
+			text_printf(t, "%c", *p);
+	}
+	text_printf(t, "'");
+}

@@ -1,0 +1,27 @@
+/* Text appended to a fixed buffer: each piece that fits is added, and the
+ * buffer is marked full (and keeps what fitted) once one does not. */
+#ifndef RT_BASE_TEXT_H
+#define RT_BASE_TEXT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+struct text_buf {
+	char *buf;
+	size_t size, len;
+	bool full;
+};
+
+/* Starts an empty text in buf (size 0: full from the start). */
+void text_init(struct text_buf *t, char *buf, size_t size);
+void text_printf(struct text_buf *t, const char *fmt, ...)
+#if defined(__GNUC__)
+	__attribute__((format(printf, 2, 3)))
+#endif
+	;
+/* Appends s as one POSIX shell word: unchanged when it is made of safe
+ * characters, otherwise in single quotes (a quote in it as '\''); a word
+ * starting with '-' gets "./" before it, so that it is not an option. */
+void text_shell_word(struct text_buf *t, const char *s);
+
+#endif

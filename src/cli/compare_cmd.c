@@ -1,0 +1,229 @@
+/* whitted compare: one image against the reference render of its scene,
+ * with the figures of the gate and, when it differs, the likely mistakes. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/check.h"
+#include "cli/cli.h"
+#include "cli/tool.h"
+
+/* Causes listed after the first. */
+#define COMPARE_LISTED 5
+
+/* The length of the well-formed UTF-8 sequence at s (1 to 4), or 0. */
+static int utf8_length(const unsigned char *s)
+{
+	int n, k;
+	unsigned cp;
+
+	if (s[0] < 0x80)
+		return 1;
+	if (s[0] >= 0xc2 && s[0] <= 0xdf)
+		n = 2, cp = s[0] & 0x1fu;
+	else if (s[0] >= 0xe0 && s[0] <= 0xef)
+		n = 3, cp = s[0] & 0x0fu;
+	else if (s[0] >= 0xf0 && s[0] <= 0xf4)
+		n = 4, cp = s[0] & 0x07u;
+	else
+		return 0;
+	for (k = 1; k < n; k++) {
+		if ((s[k] & 0xc0) != 0x80)
+			return 0;
+		cp = cp << 6 | (s[k] & 0x3fu);
+	}
+	/* Overlong forms, surrogates and beyond U+10FFFF are not UTF-8. */
+	if ((n == 3 && cp < 0x800) || (n == 4 && (cp < 0x10000 || cp > 0x10ffff)) ||
+	    (cp >= 0xd800 && cp <= 0xdfff))
+		return 0;
+	return n;
+}
+
+/* A JSON string of s, valid whatever the bytes (a file name need not be
+ * UTF-8): a byte that is not part of a UTF-8 sequence is written as
+ * U+FFFD, the replacement character. */
+static void json_string(const char *s)
+{
+	const unsigned char *p = (const unsigned char *)s;
+
+	putchar('"');
+	while (*p) {
+		int n = utf8_length(p);
+		if (*p == '"' || *p == '\\')
+			printf("\\%c", *p);
+		else if (*p < 0x20 || *p == 0x7f)
+			printf("\\u%04x", *p);
+		else if (n == 0)
+			printf("\\ufffd");
+		else
+			fwrite(p, 1, (size_t)n, stdout);
+		p += n ? n : 1;
+	}
+	putchar('"');
+}
+
+/* JSON has no infinity: identical images have a PSNR of null. */
+static void json_psnr(double psnr)
+{
+	if (isinf(psnr))
+		printf("null");
+	else
+		printf("%.3f", psnr);
+}
+
+static void compare_json(const struct check_options *o, const struct check_reference *ref,
+			 const struct check_result *res, const char *diagnosis)
+{
+	size_t k;
+
+	printf("{\"scene\": ");
+	json_string(o->scene.path ? o->scene.path : "test-scene");
+	printf(", \"image\": ");
+	json_string(o->images[0]);
+	printf(", \"width\": %d, \"height\": %d", ref->image.width, ref->image.height);
+	printf(", \"psnr\": ");
+	json_psnr(res->fig.psnr);
+	printf(", \"psnr_gate\": ");
+	json_psnr(res->fig.psnr_gate);
+	printf(", \"left_out\": %ld", res->fig.left_out);
+	printf(", \"conversion\": \"%s\"", res->truncated ? "truncate" : "round");
+	printf(", \"psnr_rounded\": ");
+	json_psnr(res->fig_rounded.psnr);
+	printf(", \"identical\": %s", isinf(res->fig.psnr) ? "true" : "false");
+	printf(", \"mean_error\": %.4f, \"off2\": %.6f, \"off8\": %.6f, \"off32\": %.6f",
+	       res->fig.mean_error, res->fig.off2, res->fig.off8, res->fig.off32);
+	printf(", \"gate\": {\"min_psnr\": %g, \"max_off2\": %g, \"max_off8\": %g}",
+	       RT_GRADE_MIN_PSNR, RT_GRADE_MAX_OFF2, RT_GRADE_MAX_OFF8);
+	printf(", \"verdict\": \"%s\"", res->verdict == CHECK_MATCH ? "match" : "differs");
+	printf(", \"explained\": \"%s\"",
+	       res->verdict == CHECK_MATCH ? "match" :
+	       res->explained == CHECK_EXPLAINED ? "explained" :
+	       res->explained == CHECK_CLOSE ? "close" : "none");
+	printf(", \"diagnosis\": ");
+	json_string(diagnosis);
+	/* The first cause, or all those ranked first equally: none preferred. */
+	printf(", \"first\": [");
+	for (k = 0; k < res->n_ranks && (k == 0 || res->ranks[k].first_equal); k++)
+		printf("%s\"%s\"", k ? ", " : "",
+		       grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp)->id);
+	printf("]");
+	printf(", \"causes\": [");
+	for (k = 0; k < res->n_ranks; k++) {
+		const struct grade_cause_text *t = grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp);
+		printf("%s{\"id\": \"%s\", \"with\": ", k ? ", " : "", t->id);
+		json_string(t->with);
+		printf(", \"fix\": ");
+		json_string(t->fix);
+		printf(", \"psnr\": ");
+		json_psnr(res->ranks[k].fig.psnr);
+		printf(", \"off2\": %.6f, \"estimated\": %s, \"explains\": %s", res->ranks[k].fig.off2,
+		       res->ranks[k].estimated ? "true" : "false",
+		       res->ranks[k].fig.match ? "true" : "false");
+		printf(", \"first_equal\": %s, \"truncated\": %s}",
+		       res->ranks[k].first_equal ? "true" : "false",
+		       res->ranks[k].truncated ? "true" : "false");
+	}
+	printf("]}\n");
+}
+
+static void print_psnr(double psnr)
+{
+	if (isinf(psnr))
+		printf("     inf dB");
+	else
+		printf("%8.2f dB", psnr);
+}
+
+static void compare_text(const struct check_options *o, const struct check_reference *ref,
+			 const struct check_result *res, const char *diagnosis)
+{
+	size_t k;
+
+	printf("%s against the reference of %s (%dx%d)\n", o->images[0],
+	       o->scene.path ? o->scene.path : "the test scene", ref->image.width, ref->image.height);
+	printf("  PSNR          ");
+	print_psnr(res->fig.psnr);
+	printf("    (every pixel)\n");
+	printf("  PSNR of gate  ");
+	print_psnr(res->fig.psnr_gate);
+	printf("    gate >= %g dB, the worst %ld pixel%s (<= 0.02 %%) left out\n", RT_GRADE_MIN_PSNR,
+	       res->fig.left_out, res->fig.left_out == 1 ? "" : "s");
+	printf("  mean error    %8.3f levels\n", res->fig.mean_error);
+	printf("  off by > 2    %8.3f %%       gate <= %g %%\n", 100.0 * res->fig.off2, 100.0 * RT_GRADE_MAX_OFF2);
+	printf("  off by > 8    %8.3f %%       gate <= %g %%\n", 100.0 * res->fig.off8, 100.0 * RT_GRADE_MAX_OFF8);
+	printf("  off by > 32   %8.3f %%\n", 100.0 * res->fig.off32);
+	printf("verdict: %s\n", res->verdict == CHECK_MATCH ? "MATCH" : "DIFFERS");
+	if (res->verdict == CHECK_MATCH) {
+		if (res->truncated && !res->fig_rounded.match)
+			printf("%s\n", diagnosis);
+		return;
+	}
+	if (res->n_ranks > 0) {
+		printf("likely causes, best first (PSNR of that mistake's image against %s):\n", o->images[0]);
+		for (k = 0; k < res->n_ranks && k < COMPARE_LISTED; k++) {
+			const struct grade_cause_text *t =
+				grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp);
+			size_t rank = k + 1;
+			while (rank > 1 && res->ranks[rank - 1].first_equal && res->ranks[0].first_equal)
+				rank--;
+			printf("  %zu%s %-48s %s", rank, res->ranks[k].first_equal ? "=" : ".", t->with,
+			       res->ranks[k].estimated ? "~" : " ");
+			print_psnr(res->ranks[k].fig.psnr);
+			printf("%s\n", res->ranks[k].fig.match ? "  explains the image" : "");
+			printf("     fix: %s\n", t->fix);
+		}
+	}
+	printf("%s\n", diagnosis);
+}
+
+int compare_main(int argc, char **argv)
+{
+	struct check_options o;
+	struct check_reference ref;
+	struct check_result res;
+	char diagnosis[1024];
+	struct diag d;
+	int status = check_args_parse(argc, argv, false, &o), rc;
+
+	if (status != 0)
+		return status < 0 ? 0 : status;
+	cli_set_signals();
+	if ((status = check_reference_make(&o, &ref)) != 0)
+		return status;
+	diag_clear(&d);
+	rc = check_image(&ref, o.images[0], &res, &d);
+	if (rc < 0) {
+		tool_print_diag(&d, "error");
+		status = rc == -RT_E_INTERRUPTED ? TOOL_EXIT_SIGNAL + (int)cli_cancelled : TOOL_EXIT_FAILURE;
+		goto out;
+	}
+	if (res.verdict == CHECK_UNREADABLE) {
+		tool_print_diag(&res.error, "error");
+		status = TOOL_EXIT_FAILURE;
+		goto out;
+	}
+	if (o.diff_path) {
+		struct image diff = { 0, 0, NULL };
+		rc = grade_diff_image(&ref.image, &res.image, &diff, &d);
+		if (rc == 0)
+			rc = image_write(&diff, o.diff_path, image_format_from_path(o.diff_path),
+					 &cli_cancelled, &d);
+		image_free(&diff);
+		if (rc < 0) {
+			tool_print_diag(&d, "error");
+			status = TOOL_EXIT_FAILURE;
+			goto out;
+		}
+	}
+	check_diagnosis(&ref, &res, diagnosis, sizeof(diagnosis));
+	if (o.json)
+		compare_json(&o, &ref, &res, diagnosis);
+	else
+		compare_text(&o, &ref, &res, diagnosis);
+	status = res.verdict == CHECK_MATCH ? TOOL_EXIT_OK : CHECK_EXIT_DIFFERS;
+out:
+	check_result_free(&res);
+	check_reference_free(&ref);
+	return status;
+}

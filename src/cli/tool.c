@@ -1,0 +1,49 @@
+/* The programs' shared printing of errors and notes, and their exit codes. */
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "cli/tool.h"
+
+static const char *name = "whitted";
+
+void tool_set_name(const char *n)
+{
+	name = n;
+}
+
+const char *tool_name(void)
+{
+	return name;
+}
+
+int tool_usage_error(const char *fmt, ...)
+{
+	va_list ap;
+
+	fprintf(stderr, "%s: error: ", name);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nTry '%s --help' for more information.\n", name);
+	return TOOL_EXIT_USAGE;
+}
+
+void tool_print_diag(const struct diag *d, const char *kind)
+{
+	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];
+
+	diag_format(d, name, kind, line, sizeof(line));
+	fprintf(stderr, "%s\n", line);
+}
+
+void tool_print_note(void *quiet, const struct diag *note)
+{
+	if (!quiet || !*(const bool *)quiet)
+		tool_print_diag(note, "note");
+}
+
+int tool_status_of(int rc)
+{
+	return rc == -RT_E_INVALID ? TOOL_EXIT_USAGE : TOOL_EXIT_FAILURE;
+}

@@ -1,0 +1,35 @@
+/* What every program of whitted does alike: its name in messages, the
+ * exit statuses, and the printing of errors, notes and usage errors.  The
+ * only code of the project, with the programs' main files, that prints to
+ * stderr. */
+#ifndef RT_CLI_TOOL_H
+#define RT_CLI_TOOL_H
+
+#include "whitted/diag.h"
+
+enum tool_exit {
+	TOOL_EXIT_OK = 0,
+	TOOL_EXIT_FAILURE = 1,	/* a scene, input or I/O error */
+	TOOL_EXIT_USAGE = 2,	/* a bad command line */
+	TOOL_EXIT_SIGNAL = 128,	/* + the signal's number */
+};
+
+/* The name that starts every message ("whitted", "whitted merge"). */
+void tool_set_name(const char *name);
+const char *tool_name(void);
+
+/* "NAME: error: MESSAGE" and the --help hint; returns TOOL_EXIT_USAGE. */
+int tool_usage_error(const char *fmt, ...)
+#if defined(__GNUC__)
+	__attribute__((format(printf, 1, 2)))
+#endif
+	;
+/* One diagnostic as "FILE:LINE:COL: KIND: MSG" (see diag_format). */
+void tool_print_diag(const struct diag *d, const char *kind);
+/* A diag_note_fn: prints the note unless *(const bool *)quiet is true. */
+void tool_print_note(void *quiet, const struct diag *note);
+/* The exit status for a failed library call: TOOL_EXIT_USAGE when the
+ * command line was at fault (RT_E_INVALID), TOOL_EXIT_FAILURE otherwise. */
+int tool_status_of(int rc);
+
+#endif

@@ -1,0 +1,43 @@
+/* Antialiasing: pixel (px, py) seen through the N x N grid of its
+ * sub-pixels' centres, (px + (i + 0.5) / N, py + (j + 0.5) / N) for i, j in
+ * 0..N-1, which are the pixel centres of the same image rendered N times
+ * larger.  Each sample is clamped to [0, 1] (it already is under --clamp
+ * level; under --clamp final this is its one clamp), the N^2 samples are
+ * summed in linear colour in a fixed order and divided by N^2, and the
+ * mean is rounded to 8 bits once.  So the pixel is the box average of the
+ * N-times-larger image to within its rounding (one level), and it does not
+ * depend on which thread or tile renders it. */
+#include "render/samples.h"
+
+/* The sample positions are made once per block (offsets within a pixel),
+ * and each sample's ray is made before the previous one is traced, so
+ * that its square root and division run beside that trace, as
+ * render_block does for one ray a pixel. */
+void render_block_samples(const struct render_job *job, struct image *img, int x0, int y0,
+			  int x1, int y1, struct ray_counts *counts)
+{
+	const int n = job->samples, nn = n * n;
+	const double inv_nn = 1.0 / ((double)n * n);
+	double offset[RT_MAX_SAMPLES];
+	int x, y, k;
+
+	for (k = 0; k < n; k++)
+		offset[k] = (k + 0.5) / n;
+	for (y = y0; y < y1; y++) {
+		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
+		for (x = x0; x < x1; x++) {
+			struct color sum = color_make(0.0, 0.0, 0.0);
+			struct ray next = camera_ray_at(job->camera, x + offset[0], y + offset[0]);
+			for (k = 0; k < nn; k++) {
+				struct ray r = next;
+				if (k + 1 < nn)
+					next = camera_ray_at(job->camera, x + offset[(k + 1) % n],
+							     y + offset[(k + 1) / n]);
+				counts->primary++;
+				sum = color_add(sum, color_clamp(render_trace(job->scene, &job->settings, &r,
+									       1, counts)));
+			}
+			render_color_to_rgb8(color_scale(sum, inv_nn), row + (size_t)(x - job->x0) * 3);
+		}
+	}
+}

@@ -1,0 +1,12 @@
+/* Antialiasing by a regular grid of sub-pixel samples (--samples N). */
+#ifndef RT_RENDER_SAMPLES_H
+#define RT_RENDER_SAMPLES_H
+
+#include "whitted/render.h"
+
+/* Renders the pixels [x0, x1) x [y0, y1) of the full image into img (whose
+ * top left pixel is the job's (x0, y0)) with job->samples^2 rays each. */
+void render_block_samples(const struct render_job *job, struct image *img, int x0, int y0,
+			  int x1, int y1, struct ray_counts *counts);
+
+#endif

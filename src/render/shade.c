@@ -1,0 +1,257 @@
+/* The shading model of scene-format.md: the colour a ray sees at its
+ * nearest hit (ambient, diffuse and tinted specular light from coloured
+ * point lights and spotlights with shadows and falloff, recursive
+ * reflection, clamping).  It runs for every ray: it allocates nothing and
+ * takes no locks. */
+#include <math.h>
+
+#include "accel/accel.h"
+#include "render/glass_stack.h"
+#include "render/shade_math.h"
+#include "scene/scene_impl.h"
+#include "whitted/render.h"
+
+/* kd (N.L) + ks max(R.L, 0)^shininess: a light's factor on Lc C. */
+static inline double render_phong(const struct material *m, struct vec3 refl, struct vec3 l,
+				  double nl)
+{
+	double k = m->kd * nl, rl = vec3_dot(refl, l);
+
+	if (rl > 0.0)
+		k += m->ks * render_specular_power(rl, m->shininess);
+	return k;
+}
+
+/* One light's term Lc (C kd (N.L) + S ks max(R.L, 0)^shininess) where the
+ * highlight's colour S is not the surface colour C (a textured floor's
+ * cell colour under its texel; see shape_specular_color_at). */
+static struct color render_light_split(const struct material *m, struct color lc,
+				       struct color base, struct color spec, struct vec3 refl,
+				       struct vec3 l, double nl)
+{
+	struct color c = color_scale(color_mul(lc, base), m->kd * nl);
+	double rl = vec3_dot(refl, l);
+
+	if (rl > 0.0)
+		c = color_add(c, color_scale(color_mul(lc, spec),
+					     m->ks * render_specular_power(rl, m->shininess)));
+	return c;
+}
+
+static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
+				   const struct ray *r, int level, struct ray_counts *counts,
+				   const struct glass_stack *glass);
+
+/* The transmitted term kt I(P + eps T, T) of glass, one more level, as
+ * a reflection is, with the glass the ray is in once through. */
+static struct color render_transmit(const struct scene *s, const struct render_settings *rs,
+				    struct vec3 p, struct vec3 dir, double kt, double eps,
+				    int level, struct ray_counts *counts,
+				    const struct glass_stack *glass)
+{
+	struct ray through;
+
+	through.origin = vec3_add_scaled(p, dir, eps);
+	through.dir = dir;
+	if (counts)
+		counts->refraction++;
+	return color_scale(render_trace_in(s, rs, &through, level + 1, counts, glass), kt);
+}
+
+/* Lights handled together; see render_trace. */
+#define RENDER_LIGHT_BATCH 8
+
+static bool render_shadowed(const struct scene *s, struct vec3 p, struct vec3 l,
+			    double dist, double eps)
+{
+	struct ray shadow;
+
+	shadow.origin = vec3_add_scaled(p, l, eps);
+	shadow.dir = l;
+	/* Only blockers nearer than the light count. */
+	return accel_occluded(s->accel, &shadow, eps, dist - eps);
+}
+
+/* The direct light at p: for each light L not shadowed and in front of the
+ * surface (N.L > 0), Lc * C * (kd (N.L) + ks max(R.L, 0)^shininess). */
+static struct color render_direct(const struct scene *s, const struct material *m,
+				  struct color base, const struct color *spec, struct vec3 p,
+				  struct vec3 n, struct vec3 refl, double eps,
+				  struct ray_counts *counts)
+{
+	struct color c = color_make(0.0, 0.0, 0.0);
+	size_t i, i0;
+
+	for (i0 = 0; i0 < s->n_lights; i0 += RENDER_LIGHT_BATCH) {
+		size_t nb = s->n_lights - i0 < RENDER_LIGHT_BATCH ? s->n_lights - i0 : RENDER_LIGHT_BATCH;
+		struct vec3 l[RENDER_LIGHT_BATCH];
+		double dist[RENDER_LIGHT_BATCH], nl[RENDER_LIGHT_BATCH];
+
+		/* The directions to a batch of lights first: their square roots
+		 * and divisions then overlap, where one light's used to wait for
+		 * the previous light's shadow ray.  (A light at the point gives
+		 * an infinite l here, which the test below never uses.) */
+		for (i = 0; i < nb; i++) {
+			struct vec3 to_light = vec3_sub(s->lights[i0 + i].pos, p);
+			dist[i] = vec3_length(to_light);
+			l[i] = vec3_scale(to_light, 1.0 / dist[i]);
+			nl[i] = vec3_dot(n, l[i]);
+		}
+		for (i = 0; i < nb; i++) {
+			double k;
+
+			if (!(dist[i] > eps))
+				continue;
+			if (nl[i] <= 0.0)
+				continue;
+			if (counts)
+				counts->shadow++;
+			if (render_shadowed(s, p, l[i], dist[i], eps))
+				continue;
+			if (spec) {
+				c = color_add(c, render_light_split(m, s->lights[i0 + i].color, base,
+								    *spec, refl, l[i], nl[i]));
+				continue;
+			}
+			k = render_phong(m, refl, l[i], nl[i]);
+			c = color_add(c, color_scale(color_mul(s->lights[i0 + i].color, base), k));
+		}
+	}
+	return c;
+}
+
+/* render_direct for scenes with spotlights or falloffs, one light at a
+ * time in the order added: a spotlight lights p only when the angle
+ * between p - Lp and its axis is at most the cutoff (cos >= cos_cutoff;
+ * tested before the shadow ray, which it spares), and a light's term is
+ * scaled by a = exp(-|Lp - p|^2 falloff) when the falloff is not 0. */
+static struct color render_direct_full(const struct scene *s, const struct material *m,
+				       struct color base, const struct color *spec, struct vec3 p,
+				       struct vec3 n, struct vec3 refl, double eps,
+				       struct ray_counts *counts)
+{
+	struct color c = color_make(0.0, 0.0, 0.0);
+	size_t i;
+
+	for (i = 0; i < s->n_lights; i++) {
+		const struct light *lt = &s->lights[i];
+		struct vec3 to_light = vec3_sub(lt->pos, p), l;
+		double dist = vec3_length(to_light), nl, k;
+
+		if (!(dist > eps))
+			continue;
+		l = vec3_scale(to_light, 1.0 / dist);
+		nl = vec3_dot(n, l);
+		if (nl <= 0.0)
+			continue;
+		/* p - Lp is -dist l. */
+		if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
+			continue;
+		if (counts)
+			counts->shadow++;
+		if (render_shadowed(s, p, l, dist, eps))
+			continue;
+		if (spec) {
+			struct color term = render_light_split(m, lt->color, base, *spec, refl, l, nl);
+			if (lt->falloff > 0.0)
+				term = color_scale(term, exp(-dist * dist * lt->falloff));
+			c = color_add(c, term);
+			continue;
+		}
+		k = render_phong(m, refl, l, nl);
+		if (lt->falloff > 0.0)
+			k *= exp(-dist * dist * lt->falloff);
+		c = color_add(c, color_scale(color_mul(lt->color, base), k));
+	}
+	return c;
+}
+
+/* The Whitted sum of scene-format.md ("Shading") at the nearest hit P of
+ * the ray, with C the colour at P, N the unit normal turned to face the
+ * ray and R = d - 2 (d.N) N its mirror direction:
+ *   I(ray) = clamp( ka C
+ *                 + sum over lights L visible from P with N.L > 0 of
+ *                       a Lc C (kd (N.L) + ks max(R.L, 0)^shininess)
+ *                 + kr I(P + eps R, R)      while level < recursion
+ *                 + kt I(P + eps T, T)      while level < recursion, for glass )
+ * clamped to [0, 1] at every level (RT_CLAMP_LEVEL) or by the caller only
+ * (RT_CLAMP_FINAL); a ray that hits nothing sees black.  The attenuation
+ * a is exp(-d^2 falloff) at the distance d to the light (1 for a falloff
+ * of 0), and a spotlight is also dark at P outside its cone.  A scene
+ * without either (every classic scene) takes render_direct, where a = 1
+ * is neither tested nor multiplied, so its pixels are what they were.
+ * T is the refracted direction (render_refract), kt and the index of
+ * refraction those --glass gives (kt 0 for every object of a scene file,
+ * which skips the term).  Under total internal reflection no light passes
+ * and the surface is a whole mirror on that side: the two terms become
+ * I(P + eps R, R), weight 1 (as in POV-Ray 3.7, whose totally reflected
+ * light is not filtered and skips the finish's reflection).  Shadows stay
+ * the contract's: glass blocks a shadow ray like any object.  Whether a
+ * hit enters or leaves glass, and between which indices, is the glass
+ * stack's (glass_stack.h), not the normal's sign: N is only turned to face
+ * the ray. */
+struct color render_trace(const struct scene *s, const struct render_settings *rs,
+			  const struct ray *r, int level, struct ray_counts *counts)
+{
+	static const struct glass_stack outside = { 0, { NULL } };
+
+	return render_trace_in(s, rs, r, level, counts, &outside);
+}
+
+static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
+				   const struct ray *r, int level, struct ray_counts *counts,
+				   const struct glass_stack *glass)
+{
+	double t = INFINITY, eps = render_offset(r->origin);
+	const struct shape *hit = accel_intersect(s->accel, r, eps, &t);
+	const struct material *m;
+	struct vec3 p, n, refl;
+	struct color base, c, spec_color;
+	const struct color *spec = NULL;
+	double dn;
+	bool tir = false;
+	struct vec3 through = { 0.0, 0.0, 0.0 };
+	struct glass_stack beyond;
+
+	if (!hit)
+		return color_make(0.0, 0.0, 0.0);
+	m = &hit->mat;
+	p = ray_at(r, t);
+	base = shape_color_at(hit, p);
+	if (shape_specular_color_at(hit, p, &spec_color))
+		spec = &spec_color;
+	c = color_scale(base, m->ka);
+	n = shape_normal(hit, p);
+	dn = vec3_dot(r->dir, n);
+	if (dn > 0.0) {
+		n = vec3_neg(n);
+		dn = -dn;
+	}
+	refl = vec3_add_scaled(r->dir, n, -2.0 * dn);
+	eps = render_offset(p);
+	c = color_add(c, s->n_special_lights
+			       ? render_direct_full(s, m, base, spec, p, n, refl, eps, counts)
+			       : render_direct(s, m, base, spec, p, n, refl, eps, counts));
+	if (level < rs->recursion && m->kt > 0.0) {
+		double eta;
+
+		glass_stack_pass(glass, hit, &beyond, &eta);
+		tir = !render_refract(r->dir, n, dn, eta, &through);
+	}
+	if (level < rs->recursion && (m->kr > 0.0 || tir)) {
+		struct ray bounce;
+		struct color reflected;
+
+		bounce.origin = vec3_add_scaled(p, refl, eps);
+		bounce.dir = refl;
+		if (counts)
+			counts->reflection++;
+		reflected = render_trace_in(s, rs, &bounce, level + 1, counts, glass);
+		c = color_add(c, color_scale(reflected, tir ? 1.0 : m->kr));
+	}
+	if (level < rs->recursion && m->kt > 0.0 && !tir)
+		c = color_add(c, render_transmit(s, rs, p, through, m->kt, eps, level, counts,
+							       &beyond));
+	return rs->clamp == RT_CLAMP_LEVEL ? color_clamp(c) : c;
+}
+

@@ -1,0 +1,51 @@
+/* The small formulas of the Whitted sum that shade.c (every render) and
+ * shade_rules.c (the renders with a rule broken, for whitted compare)
+ * share, inline so that the per-ray path calls nothing. */
+#ifndef RT_SHADE_MATH_H
+#define RT_SHADE_MATH_H
+
+#include <math.h>
+#include <stdbool.h>
+
+#include "whitted/render.h"
+#include "whitted/vec3.h"
+
+/* The offset for rays leaving a surface at p: relative to the size of the
+ * coordinates, so that it stays above their rounding error (no acne) and
+ * far below anything visible (no leaks). */
+static inline double render_offset(struct vec3 p)
+{
+	/* Comparisons rather than fmax, which is a library call here; the
+	 * same value for every non-NaN coordinate. */
+	double m = 1.0, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+
+	m = ax > m ? ax : m;
+	m = ay > m ? ay : m;
+	m = az > m ? az : m;
+	return RT_EPSILON * m;
+}
+
+/* rl^shininess.  pow is exact for an exponent of 1 (the floor's), so that
+ * common case skips the call without changing a bit. */
+static inline double render_specular_power(double rl, double shininess)
+{
+	return shininess == 1.0 ? rl : pow(rl, shininess);
+}
+
+/* The refracted direction of unit d through a surface of unit normal n
+ * facing the ray (d.n = dn <= 0), eta = n1 / n2 (Snell: n1 sin i = n2
+ * sin t): t = eta d + (eta cos i - cos t) n with cos i = -dn and cos t =
+ * sqrt(1 - eta^2 (1 - cos^2 i)).  False for total internal reflection
+ * (the root's argument < 0). */
+static inline bool render_refract(struct vec3 d, struct vec3 n, double dn, double eta,
+				  struct vec3 *t)
+{
+	double cos_i = -dn, k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+
+	if (k < 0.0)
+		return false;
+	*t = vec3_normalize(vec3_add(vec3_scale(d, eta), vec3_scale(n, eta * cos_i - sqrt(k))));
+	return true;
+}
+
+#endif

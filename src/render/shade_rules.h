@@ -1,0 +1,36 @@
+/* The Whitted sum of shade.c with the assignment's rules breakable one by
+ * one: the renders of the typical students' mistakes that `whitted compare`
+ * matches a submission against.  Not on the path of an ordinary render,
+ * which never calls it; tests/unit/render/test_shade_rules.c checks that
+ * with no rule broken it gives render_trace's colour bit for bit. */
+#ifndef RT_SHADE_RULES_H
+#define RT_SHADE_RULES_H
+
+#include "whitted/render.h"
+
+/* Each a rule of scene-format.md ("Shading") left out or done as the
+ * handout's literal text says; a set of them is an unsigned bit mask. */
+enum shade_rule {
+	RT_RULE_WHITE_SPECULAR = 1u << 0,	/* specular a Lc ks (R.L)^n, not times C */
+	RT_RULE_NO_SHADOWS = 1u << 1,		/* no shadow rays: every light reaches P */
+	RT_RULE_LIGHT_BEHIND = 1u << 2,		/* no N.L > 0 test: diffuse max(N.L, 0), the
+						 * highlight still added where R.L > 0 */
+	RT_RULE_NEVER_CLAMP = 1u << 3,		/* no clamping; the byte wraps (low 8 bits
+						 * of round(255 c)) */
+	RT_RULE_UNIT_STARTS = 1u << 4,		/* shadow and reflected rays start at
+						 * P + 1 * direction (the handout's text) */
+	RT_RULE_FLOOR_SWAPPED = 1u << 5,	/* the floor's tile colours inverted: white
+						 * where i + j is odd */
+	RT_RULE_TWO_SIDED = 1u << 6,		/* with LIGHT_BEHIND: diffuse kd |N.L| */
+	RT_RULE_SIGNED_DIFFUSE = 1u << 7,	/* with LIGHT_BEHIND: diffuse kd N.L, signed (a
+						 * light behind darkens) */
+};
+
+/* render_trace with the rules in `rules` broken (0: the contract, the same
+ * colour as render_trace).  For RT_RULE_NEVER_CLAMP a primary ray's colour
+ * comes back as the wrapped byte over 255, so that render_color_to_rgb8
+ * gives the wrapped byte.  Allocates nothing. */
+struct color shade_rules_trace(const struct scene *s, const struct render_settings *rs,
+			       unsigned rules, const struct ray *r, int level);
+
+#endif

@@ -1,0 +1,29 @@
+/* The scene's fields, for the library modules that walk them on the hot
+ * path (the renderer, the hierarchy's builder); everything else goes
+ * through the accessors of whitted/scene.h. */
+#ifndef RT_SCENE_IMPL_H
+#define RT_SCENE_IMPL_H
+
+#include "whitted/scene.h"
+
+struct accel;
+
+struct scene {
+	char *name;
+	int recursion;
+	int image_size;
+	struct shape **shapes;
+	size_t n_shapes, cap_shapes;
+	struct light *lights;
+	size_t n_lights, cap_lights;
+	/* Lights with a falloff or a cone: while 0 the renderer takes the
+	 * classic path, which neither tests nor multiplies. */
+	size_t n_special_lights;
+	struct scene_view view;
+	struct accel *accel;		/* built by scene_prepare */
+	uint64_t source_hash;
+	uint64_t floor_texture_hash;	/* of the floor's textures' pixels; 0: none */
+	const struct shape *floor;	/* scene_add_view_floor's, or NULL */
+};
+
+#endif

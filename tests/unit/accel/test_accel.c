@@ -1,0 +1,723 @@
+/* The BVH against brute force: for random scenes of every primitive, the
+ * nearest hit (shape and t) and occlusion agree with a plain loop over
+ * all shapes; rays that graze a shape exactly where its box ends (the
+ * boxes are floats, rounded outwards); and the degenerate scenes (one
+ * centre, one shape, none, very many). */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "accel/accel_tree.h"
+#include "shapes/solve.h"
+#include "support.h"
+
+static uint64_t rng_state;
+
+static void rng_seed(uint64_t seed)
+{
+	rng_state = seed * 0x9e3779b97f4a7c15u + 1;
+}
+
+/* xorshift64*: uniform in [0, 1). */
+static double rng(void)
+{
+	rng_state ^= rng_state >> 12;
+	rng_state ^= rng_state << 25;
+	rng_state ^= rng_state >> 27;
+	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+}
+
+static double uniform(double lo, double hi)
+{
+	return lo + (hi - lo) * rng();
+}
+
+static struct vec3 random_point(double half)
+{
+	return vec3_make(uniform(-half, half), uniform(-half, half), uniform(-half, half));
+}
+
+static struct vec3 random_direction(void)
+{
+	for (;;) {
+		struct vec3 v = random_point(1.0);
+		double len = vec3_length(v);
+		if (len > 0.1 && len <= 1.0)
+			return vec3_scale(v, 1.0 / len);
+	}
+}
+
+static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
+
+static void add(struct scene *s, struct shape *sh)
+{
+	struct diag d;
+
+	assert_non_null(sh);
+	assert_int_equal(scene_add_shape(s, sh, &d), 0);
+}
+
+/* A random primitive near centre c with size about `size`. */
+static void add_random_shape(struct scene *s, struct vec3 c, double size)
+{
+	double kind = rng();
+
+	if (kind < 0.35) {
+		add(s, sphere_create(c, uniform(0.05, 1.0) * size, &mat));
+	} else if (kind < 0.7) {
+		add(s, triangle_create(vec3_add(c, random_point(size)), vec3_add(c, random_point(size)),
+				       vec3_add(c, random_point(size)), &mat));
+	} else {
+		/* An ellipsoid, hyperboloid or cylinder around c:
+		 * a (x-cx)^2 + b (y-cy)^2 + e (z-cz)^2 = r^2 expanded. */
+		double a = uniform(0.2, 1.0), b = uniform(0.2, 1.0);
+		double e = rng() < 0.3 ? 0.0 : rng() < 0.5 ? -uniform(0.2, 1.0) : uniform(0.2, 1.0);
+		double r = uniform(0.2, 1.0) * size;
+		double coef[10] = {
+			a, b, e, 0, 0, 0, -2 * a * c.x, -2 * b * c.y, -2 * e * c.z,
+			a * c.x * c.x + b * c.y * c.y + e * c.z * c.z - r * r,
+		};
+		struct vec3 ext = vec3_make(uniform(0.5, 2) * size, uniform(0.5, 2) * size,
+					    uniform(0.5, 2) * size);
+		double clip = rng();
+
+		/* Clipped on all three axes (bounded), on some, or not at all. */
+		if (clip < 0.5) {
+			/* all three */
+		} else if (clip < 0.65) {
+			ext.x = 0;
+		} else if (clip < 0.8) {
+			ext.y = ext.z = 0;
+		} else {
+			ext = vec3_make(0, 0, 0);
+		}
+		add(s, quadric_create(coef, vec3_sub(c, vec3_scale(ext, 0.5)), ext, &mat));
+	}
+}
+
+/* Brute force: the nearest hit over every shape. */
+static const struct shape *brute_nearest(const struct scene *s, const struct ray *r,
+					 double t_min, double *t_max)
+{
+	const struct shape *hit = NULL;
+	size_t i;
+
+	for (i = 0; i < s->n_shapes; i++)
+		if (shape_intersect(s->shapes[i], r, t_min, t_max))
+			hit = s->shapes[i];
+	return hit;
+}
+
+static bool brute_occluded(const struct scene *s, const struct ray *r, double t_min, double t_max)
+{
+	size_t i;
+
+	for (i = 0; i < s->n_shapes; i++) {
+		double t = t_max;
+		if (shape_intersect(s->shapes[i], r, t_min, &t))
+			return true;
+	}
+	return false;
+}
+
+/* Compares the BVH with brute force on n rays; returns how many hit. */
+static int compare_rays(const struct scene *s, int n, double half)
+{
+	int i, hits = 0;
+
+	for (i = 0; i < n; i++) {
+		struct ray r;
+		double t_min = rng() < 0.5 ? 1e-6 : uniform(0, half);
+		double t_max = rng() < 0.5 ? INFINITY : uniform(t_min, 4 * half);
+		double ta = t_max, tb = t_max;
+		const struct shape *a, *b;
+
+		r.origin = random_point(1.5 * half);
+		if (rng() < 0.5 && s->n_shapes > 0) {
+			/* Aim at a random shape's box (or the origin). */
+			struct aabb box;
+			const struct shape *target = s->shapes[(size_t)(rng() * (double)s->n_shapes)];
+			struct vec3 aim = shape_bounds(target, &box) ? aabb_centre(box) : vec3_make(0, 0, 0);
+			r.dir = vec3_normalize(vec3_sub(vec3_add(aim, random_point(0.1)), r.origin));
+			if (vec3_length(r.dir) == 0.0)
+				r.dir = random_direction();
+		} else {
+			r.dir = random_direction();
+		}
+		if (rng() < 0.1)
+			r.dir = vec3_scale(r.dir, uniform(0.1, 10));	/* not unit */
+		if (rng() < 0.05) {
+			/* Along an axis: zero components in the slab test. */
+			int axis = (int)(rng() * 3);
+			r.dir = vec3_make(axis == 0, axis == 1, axis == 2);
+			if (rng() < 0.5)
+				r.dir = vec3_neg(r.dir);
+		}
+		a = accel_intersect(s->accel, &r, t_min, &ta);
+		b = brute_nearest(s, &r, t_min, &tb);
+		if (ta != tb || (a == NULL) != (b == NULL)) {
+			print_error("ray %d: BVH t = %.17g (%s), brute force t = %.17g (%s)\n", i, ta,
+				    a ? a->ops->keyword : "none", tb, b ? b->ops->keyword : "none");
+			fail();
+		}
+		if (a != b) {
+			/* A tie: the BVH's shape must hit at the same t. */
+			double t = t_max;
+			assert_true(shape_intersect(a, &r, t_min, &t));
+			assert_true(t == tb);
+		}
+		hits += a != NULL;
+		if (accel_occluded(s->accel, &r, t_min, t_max) != brute_occluded(s, &r, t_min, t_max)) {
+			print_error("ray %d: occlusion differs\n", i);
+			fail();
+		}
+	}
+	return hits;
+}
+
+static void test_accel_random_scenes_match_brute_force(void **state)
+{
+	int scene_no;
+
+	(void)state;
+	for (scene_no = 0; scene_no < 12; scene_no++) {
+		struct scene *s = scene_create("random");
+		int n = 1 + scene_no * scene_no * 4, i, hits;
+		double half = 50;
+		struct diag d;
+
+		rng_seed((uint64_t)scene_no + 1);
+		assert_non_null(s);
+		for (i = 0; i < n; i++)
+			add_random_shape(s, random_point(half), uniform(0.5, 10));
+		if (scene_no % 2 == 0)
+			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+		assert_int_equal(scene_prepare(s, 1, &d), 0);
+		hits = compare_rays(s, 3000, half);
+		/* The rays aimed at shapes mostly hit. */
+		assert_true(hits > 300);
+		scene_destroy(s);
+	}
+}
+
+/* The AVX2 walks give the SSE2 walks' answers to the bit: the same
+ * nearest shape (not only one at the same distance: the same nodes in the
+ * same order), the same t, the same occlusion, on random scenes and rays
+ * (axis-aligned ones too, whose slabs hold infinities and NaNs). */
+static void test_accel_avx2_walks_match_sse2(void **state)
+{
+	int scene_no;
+
+	(void)state;
+	if (!accel_avx2_usable()) {
+		print_message("no AVX2 on this processor (or not compiled for it): nothing to compare\n");
+		skip();
+	}
+	for (scene_no = 0; scene_no < 6; scene_no++) {
+		struct scene *s = scene_create("random");
+		int n = 40 + scene_no * scene_no * 60, i;
+		double half = 50;
+		struct accel *a;
+		struct diag d;
+
+		rng_seed((uint64_t)scene_no + 101);
+		assert_non_null(s);
+		for (i = 0; i < n; i++)
+			add_random_shape(s, random_point(half), uniform(0.5, 10));
+		if (scene_no % 2 == 1)
+			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+		assert_int_equal(scene_prepare(s, 1, &d), 0);
+		a = s->accel;
+		for (i = 0; i < 4000; i++) {
+			struct ray r;
+			double t_min = rng() < 0.5 ? 1e-6 : uniform(0, half);
+			double t_max = rng() < 0.5 ? INFINITY : uniform(t_min, 4 * half);
+			double ta = t_max, tb = t_max;
+			const struct shape *sa, *sb;
+
+			r.origin = random_point(1.5 * half);
+			r.dir = random_direction();
+			if (rng() < 0.5) {
+				struct aabb box;
+				const struct shape *target = s->shapes[(size_t)(rng() * (double)s->n_shapes)];
+				if (shape_bounds(target, &box))
+					r.dir = vec3_sub(aabb_centre(box), r.origin);
+				if (vec3_length(r.dir) == 0.0)
+					r.dir = random_direction();
+			}
+			if (rng() < 0.1) {
+				int axis = (int)(rng() * 3);
+				r.dir = vec3_make(axis == 0, axis == 1, -(double)(axis == 2));
+			}
+			a->walk_avx2 = false;
+			sa = accel_intersect(a, &r, t_min, &ta);
+			sb = accel_avx2_intersect(a, &r, t_min, &tb);
+			assert_ptr_equal(sa, sb);
+			assert_memory_equal(&ta, &tb, sizeof(ta));
+			assert_int_equal(accel_occluded(a, &r, t_min, t_max),
+					 accel_avx2_occluded(a, &r, t_min, t_max));
+		}
+		scene_destroy(s);
+	}
+}
+
+static void test_accel_all_shapes_at_one_centre(void **state)
+{
+	struct scene *s = scene_create("one centre");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(99);
+	/* Spheres of different radii, and triangles and clipped quadrics
+	 * whose boxes share the centre: no split by centres is possible. */
+	for (i = 0; i < 200; i++) {
+		double r = 0.5 + i * 0.05;
+		add(s, sphere_create(vec3_make(3, 3, 3), r, &mat));
+	}
+	for (i = 0; i < 100; i++) {
+		struct vec3 a = random_point(5);
+		add(s, triangle_create(vec3_add(vec3_make(3, 3, 3), a), vec3_sub(vec3_make(3, 3, 3), a),
+				       vec3_add(vec3_make(3, 3, 3), vec3_cross(a, vec3_make(0, 0, 1))), &mat));
+	}
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_true(accel_node_count(s->accel) > 1);
+	assert_true(compare_rays(s, 3000, 10) > 300);
+	scene_destroy(s);
+}
+
+static void test_accel_one_shape(void **state)
+{
+	struct scene *s = scene_create("one");
+	struct ray r;
+	struct diag d;
+	double t = INFINITY;
+
+	(void)state;
+	add(s, sphere_create(vec3_make(0, 0, 0), 2, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_int_equal(accel_node_count(s->accel), 1);
+	r.origin = vec3_make(0, 0, -10);
+	r.dir = vec3_make(0, 0, 1);
+	assert_ptr_equal(accel_intersect(s->accel, &r, 0, &t), s->shapes[0]);
+	assert_near(t, 8.0, 1e-12);
+	assert_true(accel_occluded(s->accel, &r, 0, 8.5));
+	assert_false(accel_occluded(s->accel, &r, 0, 8.0));
+	r.dir = vec3_make(0, 0, -1);
+	t = INFINITY;
+	assert_null(accel_intersect(s->accel, &r, 0, &t));
+	assert_true(isinf(t));
+	rng_seed(7);
+	compare_rays(s, 2000, 5);
+	scene_destroy(s);
+}
+
+static void test_accel_no_shapes(void **state)
+{
+	struct scene *s = scene_create("empty");
+	struct ray r;
+	struct diag d;
+	double t = 5.0;
+
+	(void)state;
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_non_null(s->accel);
+	assert_int_equal(accel_node_count(s->accel), 0);
+	r.origin = vec3_make(0, 0, 0);
+	r.dir = vec3_make(1, 0, 0);
+	assert_null(accel_intersect(s->accel, &r, 0, &t));
+	assert_near(t, 5.0, 0.0);
+	assert_false(accel_occluded(s->accel, &r, 0, INFINITY));
+	/* Only unbounded shapes: no nodes, but hits. */
+	{
+		static const double plane[10] = { 0, 0, 0, 0, 0, 0, 1, 0, 0, -3 };
+		add(s, quadric_create(plane, vec3_make(0, 0, 0), vec3_make(0, 0, 0), &mat));
+	}
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_int_equal(accel_node_count(s->accel), 0);
+	t = INFINITY;
+	assert_ptr_equal(accel_intersect(s->accel, &r, 0, &t), s->shapes[0]);
+	assert_near(t, 3.0, 0.0);
+	assert_true(accel_occluded(s->accel, &r, 0, INFINITY));
+	assert_false(accel_occluded(s->accel, &r, 0, 3.0));
+	scene_destroy(s);
+}
+
+static void test_accel_many_shapes(void **state)
+{
+	struct scene *s = scene_create("many");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(10000);
+	for (i = 0; i < 10000; i++)
+		add_random_shape(s, random_point(200), uniform(0.2, 3));
+	assert_int_equal(scene_add_floor(s, 300, 10, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_true(accel_node_count(s->accel) > 1000);
+	assert_true(accel_bytes(s->accel) > accel_node_count(s->accel));
+	assert_true(compare_rays(s, 3000, 200) > 300);
+	/* Preparing again rebuilds without leaking the old hierarchy. */
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	scene_destroy(s);
+}
+
+static void test_accel_many_at_one_point(void **state)
+{
+	struct scene *s = scene_create("stack");
+	struct diag d;
+	int i;
+
+	(void)state;
+	/* 10000 identical tiny spheres: the median split must still end. */
+	for (i = 0; i < 10000; i++)
+		add(s, sphere_create(vec3_make(1, 2, 3), 0.5, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	rng_seed(3);
+	compare_rays(s, 500, 4);
+	scene_destroy(s);
+}
+
+/* The halves of big nodes are built by different threads, each into the
+ * node indices its refs reserve: the tree must come out the same, node
+ * for node and in the same order, whatever the number of threads. */
+static void assert_same_tree_for_threads(struct scene *s)
+{
+	struct bvh_node *nodes;
+	const struct shape **bounded;
+	size_t n_nodes, n_bounded;
+	struct diag d;
+	static const int threads[] = { 2, 3, 7, 64 };
+	size_t k;
+
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	n_nodes = s->accel->n_nodes;
+	n_bounded = s->accel->n_bounded;
+	nodes = test_malloc(n_nodes * sizeof(*nodes));
+	bounded = test_malloc(n_bounded * sizeof(*bounded));
+	memcpy(nodes, s->accel->nodes, n_nodes * sizeof(*nodes));
+	memcpy(bounded, s->accel->bounded, n_bounded * sizeof(*bounded));
+	for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
+		assert_int_equal(scene_prepare(s, threads[k], &d), 0);
+		assert_int_equal(s->accel->n_nodes, n_nodes);
+		assert_int_equal(s->accel->n_bounded, n_bounded);
+		assert_memory_equal(s->accel->nodes, nodes, n_nodes * sizeof(*nodes));
+		assert_memory_equal(s->accel->bounded, bounded, n_bounded * sizeof(*bounded));
+	}
+	test_free(nodes);
+	test_free(bounded);
+}
+
+static void test_accel_threads_build_the_same_tree(void **state)
+{
+	struct scene *s = scene_create("threads");
+	struct diag d;
+	int i;
+
+	(void)state;
+	rng_seed(77);
+	/* Big enough that the top nodes' halves (4096 refs and more) go to
+	 * other threads; the floor is split off first, as in a real scene. */
+	for (i = 0; i < 40000; i++)
+		add_random_shape(s, random_point(300), uniform(0.2, 3));
+	assert_int_equal(scene_add_floor(s, 1000, 20, &d), 0);
+	assert_same_tree_for_threads(s);
+	/* Every index below n_nodes is a node of the tree: the unused ones
+	 * were squeezed out, and the root's children follow it. */
+	assert_true(s->accel->n_nodes <= s->accel->n_bounded - 1);
+	assert_int_equal(s->accel->nodes[0].slot[0] & 7, ACCEL_SLOT_NODE);
+	/* Each node in one cache line. */
+	assert_int_equal((uintptr_t)s->accel->nodes % ACCEL_NODE_ALIGN, 0);
+	assert_int_equal(sizeof(struct bvh_node), ACCEL_NODE_ALIGN);
+	assert_true(compare_rays(s, 3000, 300) > 300);
+	scene_destroy(s);
+}
+
+static void test_accel_threads_median_splits(void **state)
+{
+	struct scene *s = scene_create("stack");
+	int i;
+
+	(void)state;
+	/* 20000 shapes at one point: the heuristic finds no split and the
+	 * median halves (10000, then 5000) go to other threads. */
+	for (i = 0; i < 20000; i++)
+		add(s, sphere_create(vec3_make(-1, 2, 5), 0.5, &mat));
+	assert_same_tree_for_threads(s);
+	rng_seed(4);
+	compare_rays(s, 300, 6);
+	scene_destroy(s);
+}
+
+static void test_accel_negative_zero_direction(void **state)
+{
+	/* A triangle standing on z = 0, its bottom edge on the face z = 0 of
+	 * its box, and rays running along that face: they touch the edge
+	 * (edges are inclusive) at x = 0, t = 5, whether the zero z
+	 * component of the direction is +0 or -0. */
+	struct scene *s = scene_create("negative zero");
+	static const double zeros[2] = { 0.0, -0.0 };
+	struct diag d;
+	int i, k;
+
+	(void)state;
+	add(s, triangle_create(vec3_make(0, -10, 0), vec3_make(0, 10, 0), vec3_make(0, 0, 20), &mat));
+	for (i = 0; i < 10; i++)
+		add(s, sphere_create(vec3_make(50 + i * 10, 0, 5), 1, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 2; k++) {
+		struct ray r;
+		double ta = INFINITY, tb = INFINITY;
+
+		r.origin = vec3_make(-5, 0, 0);
+		r.dir = vec3_make(1, zeros[k], zeros[k]);
+		assert_ptr_equal(brute_nearest(s, &r, 1e-6, &tb), s->shapes[0]);
+		assert_near(tb, 5.0, 0.0);
+		assert_ptr_equal(accel_intersect(s->accel, &r, 1e-6, &ta), s->shapes[0]);
+		assert_near(ta, 5.0, 0.0);
+		assert_true(accel_occluded(s->accel, &r, 1e-6, INFINITY));
+		/* The same along the top of a box: the sphere at x = 50 spans
+		 * z in [4, 6]; a ray along z = 6 grazes it at (50, 0, 6). */
+		r.origin = vec3_make(-5, 0, 6);
+		r.dir = vec3_make(1, zeros[k], zeros[k]);
+		ta = tb = INFINITY;
+		assert_ptr_equal(accel_intersect(s->accel, &r, 1e-6, &ta), brute_nearest(s, &r, 1e-6, &tb));
+		assert_true(ta == tb);
+	}
+	scene_destroy(s);
+}
+
+/* Rays that graze a shape where its node's box ends.  Nodes keep their
+ * boxes as floats; a bound that is not a float must be rounded outwards,
+ * because rounded to the nearest float it moves inwards about half the
+ * time (float(0.31) > 0.31, float(0.21) < 0.21), and a ray that meets the
+ * shape in the sliver so cut off misses through the hierarchy although it
+ * hits by brute force.  The expected answers here come from brute force
+ * and from the geometry (a ray on an edge hits: edges are inclusive), the
+ * slivers from the test's own float conversion. */
+
+/* The point with coordinate va on axis a, vb on axis (a + 1) % 3 and vc
+ * on axis (a + 2) % 3. */
+static struct vec3 on_axes(int a, double va, double vb, double vc)
+{
+	double v[3];
+
+	v[a] = va;
+	v[(a + 1) % 3] = vb;
+	v[(a + 2) % 3] = vc;
+	return vec3_make(v[0], v[1], v[2]);
+}
+
+/* The distance from v to the float nearest it, signed: > 0 when that
+ * float lies above v. */
+static double nearest_float_gap(double v)
+{
+	return (double)(float)v - v;
+}
+
+/* One grazed triangle: its edge A-B lies on the plane a = v (v not a
+ * float), along axis (a + 2) % 3 from c0 to c0 + 1, in the plane
+ * (a + 1) % 3 = w; its third vertex lies 1 away from the edge on the side
+ * `inward`, chosen so that the edge is the box's bound that the nearest
+ * float would cut: its minimum when float(v) > v, its maximum otherwise. */
+struct graze {
+	int a;
+	double v, inward, w, c0;
+	struct shape *shape;
+};
+
+#define GRAZE_PER_AXIS 30
+
+static int make_grazes(struct graze *g)
+{
+	int a, k, n = 0;
+
+	for (a = 0; a < 3; a++) {
+		for (k = 1; k <= GRAZE_PER_AXIS; k++) {
+			double v = 0.1 * k + 0.01 + 0.003 * a, gap = nearest_float_gap(v);
+			struct graze *e = &g[n];
+
+			if (gap == 0.0)
+				continue;
+			e->a = a;
+			e->v = v;
+			e->inward = gap > 0 ? 1.0 : -1.0;
+			/* The three families apart: each in its own region. */
+			e->w = 50.0 * a + 0.37 * k;
+			e->c0 = 50.0 * a + 1.5 * k;
+			/* v0 = A, e1 = B - A: the edge's a coordinate is v exactly
+			 * in the box (v0 + e1 adds 0). */
+			e->shape = triangle_create(on_axes(a, v, e->w, e->c0),
+						   on_axes(a, v, e->w, e->c0 + 1.0),
+						   on_axes(a, v + e->inward, e->w, e->c0 + 0.5), &mat);
+			assert_non_null(e->shape);
+			n++;
+		}
+	}
+	return n;
+}
+
+/* The ray must hit `want` (brute force says so, for a ray that meets it
+ * on its edge or inside it) and the hierarchy must agree, for the nearest
+ * hit and for occlusion. */
+static void check_graze(const struct scene *s, const struct shape *want, struct ray r,
+			const char *what, int index)
+{
+	double ta = INFINITY, tb = INFINITY;
+	const struct shape *a, *b;
+
+	b = brute_nearest(s, &r, 1e-6, &tb);
+	if (b != want) {
+		print_error("%s %d: brute force misses the grazed shape\n", what, index);
+		fail();
+	}
+	a = accel_intersect(s->accel, &r, 1e-6, &ta);
+	if (a != b || ta != tb) {
+		print_error("%s %d: ray from (%.17g, %.17g, %.17g) along (%g, %g, %g): BVH %s at "
+			    "t = %.17g, brute force %s at t = %.17g\n", what, index, r.origin.x,
+			    r.origin.y, r.origin.z, r.dir.x, r.dir.y, r.dir.z, a ? "hits" : "misses",
+			    ta, b ? "hits" : "misses", tb);
+		fail();
+	}
+	if (!accel_occluded(s->accel, &r, 1e-6, 2 * tb)) {
+		print_error("%s %d: the BVH finds no blocker; brute force hits at t = %.17g\n", what,
+			    index, tb);
+		fail();
+	}
+}
+
+/* Perpendicular rays exactly on the edge (its middle and both ends) and
+ * a sliver inside it, where the nearest float would cut the box, and an
+ * oblique ray through that sliver. */
+static void check_grazes(const struct scene *s, const struct graze *g, int n)
+{
+	int i;
+
+	for (i = 0; i < n; i++) {
+		const struct graze *e = &g[i];
+		struct vec3 down = on_axes(e->a, 0, -1, 0);
+		double sliver = e->v + 0.5 * nearest_float_gap(e->v);
+		struct vec3 dir = vec3_normalize(on_axes(e->a, 0.3 * e->inward, -1, 0.2));
+		struct vec3 target = on_axes(e->a, sliver, e->w, e->c0 + 0.5);
+		struct ray r;
+
+		/* gap/2 towards the triangle: strictly between v and float(v). */
+		assert_true((sliver - e->v) * e->inward > 0);
+		r.dir = down;
+		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0 + 0.5);
+		check_graze(s, e->shape, r, "edge", i);
+		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0);
+		check_graze(s, e->shape, r, "vertex A", i);
+		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0 + 1.0);
+		check_graze(s, e->shape, r, "vertex B", i);
+		r.origin = on_axes(e->a, sliver, e->w + 5, e->c0 + 0.5);
+		check_graze(s, e->shape, r, "sliver", i);
+		r.dir = dir;
+		r.origin = vec3_add_scaled(target, dir, -5.0);
+		check_graze(s, e->shape, r, "oblique", i);
+	}
+}
+
+static void test_accel_rays_grazing_box_bounds(void **state)
+{
+	struct graze g[3 * GRAZE_PER_AXIS];
+	struct scene *s = scene_create("grazes");
+	struct diag d;
+	int n, i, cut_min = 0, cut_max = 0;
+
+	(void)state;
+	n = make_grazes(g);
+	for (i = 0; i < n; i++) {
+		add(s, g[i].shape);
+		cut_min += g[i].inward > 0;
+		cut_max += g[i].inward < 0;
+	}
+	/* Both kinds of bound, on every axis, in a tree of several levels. */
+	assert_true(cut_min >= 20 && cut_max >= 20);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_true(accel_node_count(s->accel) > 8);
+	check_grazes(s, g, n);
+	scene_destroy(s);
+	/* And each triangle alone, where its box is the root's child. */
+	n = make_grazes(g);
+	for (i = 0; i < n; i++) {
+		s = scene_create("one graze");
+		add(s, g[i].shape);
+		assert_int_equal(scene_prepare(s, 1, &d), 0);
+		check_grazes(s, &g[i], 1);
+		scene_destroy(s);
+	}
+}
+
+static void test_accel_rays_grazing_clip_faces(void **state)
+{
+	/* Radius-2 spheres as quadrics, at (0, 0, 0) clipped to z in
+	 * [-0.69, 0.7] and at (0, 8, 0) ((x)^2 + (y - 8)^2 + z^2 = 4) clipped
+	 * to z in [-1.5, -1.5 + 2.2], that is [-1.5, 0.7000000000000002]: each
+	 * box is its clip box, and rays across a sphere at the height of a
+	 * clip face meet the surface on the face (the clip is inclusive).
+	 * -0.69 and 0.7000000000000002 are not floats, and the floats nearest
+	 * them lie inside the box. */
+	static const double coef[2][10] = {
+		{ 1, 1, 1, 0, 0, 0, 0, 0, 0, -4 },
+		{ 1, 1, 1, 0, 0, 0, 0, -16, 0, 60 },
+	};
+	struct scene *s = scene_create("clip faces");
+	struct shape *q;
+	struct aabb box;
+	struct diag d;
+	int i, k;
+
+	(void)state;
+	add(s, quadric_create(coef[0], vec3_make(-3, -3, -0.69), vec3_make(6, 6, 1.39), &mat));
+	add(s, quadric_create(coef[1], vec3_make(-3, 5, -1.5), vec3_make(6, 6, 2.2), &mat));
+	/* Spheres around them, so that the quadrics sit in a tree. */
+	for (i = 0; i < 12; i++)
+		add(s, sphere_create(vec3_make(20.0 * (i % 4) - 30, 20.0 * (i / 4) + 20, 0), 1, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 2; k++) {
+		/* The face the nearest float would cut: the bottom of the first
+		 * box, the top of the second. */
+		double face, heights[2];
+		double cy = 8.0 * k;
+
+		q = s->shapes[k];
+		assert_true(shape_bounds(q, &box));
+		face = k == 0 ? box.min.z : box.max.z;
+		assert_true(k == 0 ? nearest_float_gap(face) > 0 : nearest_float_gap(face) < 0);
+		heights[0] = face;
+		heights[1] = face + 0.5 * nearest_float_gap(face);
+		for (i = 0; i < 2; i++) {
+			struct ray r;
+
+			r.origin = vec3_make(-10, cy, heights[i]);
+			r.dir = vec3_make(1, 0, 0);
+			check_graze(s, q, r, "clip face", 2 * k + i);
+			r.origin = vec3_make(0, k == 0 ? -10 : 20, heights[i]);
+			r.dir = vec3_make(0, k == 0 ? 1 : -1, 0);
+			check_graze(s, q, r, "clip face", 2 * k + i);
+		}
+	}
+	scene_destroy(s);
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_accel_random_scenes_match_brute_force),
+		cmocka_unit_test(test_accel_avx2_walks_match_sse2),
+		cmocka_unit_test(test_accel_all_shapes_at_one_centre),
+		cmocka_unit_test(test_accel_one_shape),
+		cmocka_unit_test(test_accel_no_shapes),
+		cmocka_unit_test(test_accel_many_shapes),
+		cmocka_unit_test(test_accel_many_at_one_point),
+		cmocka_unit_test(test_accel_negative_zero_direction),
+		cmocka_unit_test(test_accel_rays_grazing_box_bounds),
+		cmocka_unit_test(test_accel_rays_grazing_clip_faces),
+		cmocka_unit_test(test_accel_threads_build_the_same_tree),
+		cmocka_unit_test(test_accel_threads_median_splits),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}

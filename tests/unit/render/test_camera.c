@@ -1,0 +1,374 @@
+/* The pinhole camera: the centre pixel, orientation, field of view, the
+ * errors of camera_init, and an image of one pixel. */
+#include <math.h>
+#include <string.h>
+
+#include "whitted/camera.h"
+#include "support.h"
+
+static const double pi = 3.14159265358979323846;
+
+static void init_default(struct camera *c, int size)
+{
+	struct camera_params p;
+	struct diag d;
+
+	camera_params_default(&p);
+	diag_clear(&d);
+	assert_int_equal(camera_init(c, &p, size, &d), 0);
+}
+
+static double angle_between(struct vec3 a, struct vec3 b)
+{
+	return acos(fmin(1.0, vec3_dot(a, b) / (vec3_length(a) * vec3_length(b))));
+}
+
+static void test_camera_defaults(void **state)
+{
+	struct camera_params p;
+
+	(void)state;
+	camera_params_default(&p);
+	assert_vec3_near(p.eye, vec3_make(0, -200, 10), 0.0);
+	assert_vec3_near(p.look, vec3_make(0, 0, 0), 0.0);
+	assert_vec3_near(p.up, vec3_make(0, 0, 1), 0.0);
+	assert_near(p.fov_deg, 80.0, 0.0);
+}
+
+static void test_camera_centre_pixel_looks_at_look_point(void **state)
+{
+	struct camera c;
+	struct ray r;
+	/* look - eye = (0, 200, -10), length sqrt(40100). */
+	double len = sqrt(40100.0);
+
+	(void)state;
+	init_default(&c, 101);
+	r = camera_ray(&c, 50, 50);
+	assert_vec3_near(r.origin, vec3_make(0, -200, 10), 0.0);
+	assert_vec3_near(r.dir, vec3_make(0, 200 / len, -10 / len), 1e-15);
+	/* The ray passes through the look-at point at t = len. */
+	assert_vec3_near(ray_at(&r, len), vec3_make(0, 0, 0), 1e-12);
+	assert_near(vec3_length(r.dir), 1.0, 1e-15);
+}
+
+static void test_camera_basis(void **state)
+{
+	struct camera c;
+	double len = sqrt(40100.0);
+
+	(void)state;
+	init_default(&c, 64);
+	/* forward = (0, 200, -10) / len; right = forward x up = (1, 0, 0);
+	 * up' = right x forward = (0, 10, 200) / len. */
+	assert_vec3_near(c.forward, vec3_make(0, 200 / len, -10 / len), 1e-15);
+	assert_vec3_near(c.right, vec3_make(1, 0, 0), 1e-15);
+	assert_vec3_near(c.up, vec3_make(0, 10 / len, 200 / len), 1e-15);
+	assert_near(c.half_height, tan(40.0 * pi / 180.0), 1e-15);
+	assert_int_equal(c.size, 64);
+}
+
+static void test_camera_up_is_up_right_is_right(void **state)
+{
+	struct camera c;
+	struct ray centre, above, below, right, left;
+
+	(void)state;
+	init_default(&c, 101);
+	centre = camera_ray(&c, 50, 50);
+	above = camera_ray(&c, 50, 49);
+	below = camera_ray(&c, 50, 51);
+	right = camera_ray(&c, 51, 50);
+	left = camera_ray(&c, 49, 50);
+	/* Row 0 is the top: the pixel above looks further up (world z and
+	 * the camera's up), the one to the right towards +x. */
+	assert_true(vec3_dot(above.dir, c.up) > vec3_dot(centre.dir, c.up));
+	assert_true(above.dir.z > centre.dir.z);
+	assert_true(below.dir.z < centre.dir.z);
+	assert_true(right.dir.x > 0.0);
+	assert_true(left.dir.x < 0.0);
+	/* The columns through the centre have no sideways component, and
+	 * the centre row no vertical one (relative to the camera). */
+	assert_near(above.dir.x, 0.0, 1e-15);
+	assert_near(vec3_dot(right.dir, c.up), 0.0, 1e-15);
+}
+
+static void test_camera_field_of_view(void **state)
+{
+	struct camera_params p;
+	struct camera c;
+	struct diag d;
+	struct ray r;
+
+	(void)state;
+	/* 90 degrees on 2 x 2: half_height 1, pixel (0, 0) at u = -0.5,
+	 * v = +0.5, so it is atan(sqrt(0.5)) off the view axis. */
+	camera_params_default(&p);
+	p.fov_deg = 90.0;
+	assert_int_equal(camera_init(&c, &p, 2, &d), 0);
+	r = camera_ray(&c, 0, 0);
+	assert_near(angle_between(r.dir, c.forward), atan(sqrt(0.5)), 1e-12);
+	assert_true(vec3_dot(r.dir, c.right) < 0.0);
+	assert_true(vec3_dot(r.dir, c.up) > 0.0);
+	/* The default 80 degrees on 101 pixels: the top-edge pixel of the
+	 * centre column is at v = tan(40) (1 - 1/101) above the axis. */
+	init_default(&c, 101);
+	r = camera_ray(&c, 50, 0);
+	assert_near(angle_between(r.dir, c.forward), atan(tan(40.0 * pi / 180.0) * 100.0 / 101.0),
+		    1e-12);
+	/* And the bottom edge mirrors it. */
+	assert_near(angle_between(camera_ray(&c, 50, 100).dir, c.forward),
+		    atan(tan(40.0 * pi / 180.0) * 100.0 / 101.0), 1e-12);
+}
+
+static void test_camera_size_one(void **state)
+{
+	struct camera c;
+	struct ray r;
+	double len = sqrt(40100.0);
+
+	(void)state;
+	init_default(&c, 1);
+	r = camera_ray(&c, 0, 0);
+	assert_vec3_near(r.dir, vec3_make(0, 200 / len, -10 / len), 1e-15);
+}
+
+static void test_camera_custom_view(void **state)
+{
+	struct camera_params p;
+	struct camera c;
+	struct diag d;
+	struct ray r;
+
+	(void)state;
+	/* Looking down -z with +y up: right is +x. */
+	p.eye = vec3_make(1, 2, 3);
+	p.look = vec3_make(1, 2, -7);
+	p.up = vec3_make(0, 5, 0);	/* need not be unit */
+	p.fov_deg = 60;
+	assert_int_equal(camera_init(&c, &p, 3, &d), 0);
+	assert_vec3_near(c.forward, vec3_make(0, 0, -1), 0.0);
+	assert_vec3_near(c.right, vec3_make(1, 0, 0), 0.0);
+	assert_vec3_near(c.up, vec3_make(0, 1, 0), 0.0);
+	/* An up that is not perpendicular to the view is made so. */
+	p.up = vec3_make(0, 1, 1);
+	assert_int_equal(camera_init(&c, &p, 3, &d), 0);
+	assert_vec3_near(c.up, vec3_make(0, 1, 0), 1e-15);
+	/* Pixel (2, 1) of 3: u = 2.5 * (2 tan 30 / 3) - tan 30 = 2/3 tan 30. */
+	r = camera_ray(&c, 2, 1);
+	assert_near(r.dir.x / -r.dir.z, 2.0 / 3.0 * tan(pi / 6.0), 1e-15);
+	assert_near(r.dir.y, 0.0, 1e-15);
+}
+
+static void expect_invalid(const struct camera_params *p, int size, const char *words)
+{
+	struct camera c;
+	struct diag d;
+
+	diag_clear(&d);
+	assert_int_equal(camera_init(&c, p, size, &d), -RT_E_INVALID);
+	if (!strstr(d.msg, words)) {
+		print_error("message '%s' does not mention '%s'\n", d.msg, words);
+		fail();
+	}
+}
+
+static void test_camera_errors(void **state)
+{
+	static const double bad_fov[] = { 0.0, -5.0, 180.0, 200.0 };
+	struct camera_params p;
+	struct camera c;
+	struct diag d;
+	size_t i;
+
+	(void)state;
+	camera_params_default(&p);
+	p.look = p.eye;
+	expect_invalid(&p, 10, "look-at");
+	camera_params_default(&p);
+	p.up = vec3_make(0, 0, 0);
+	expect_invalid(&p, 10, "zero");
+	/* Parallel and anti-parallel to the view (0, 200, -10). */
+	p.up = vec3_make(0, 20, -1);
+	expect_invalid(&p, 10, "parallel");
+	p.up = vec3_make(0, -20, 1);
+	expect_invalid(&p, 10, "parallel");
+	camera_params_default(&p);
+	for (i = 0; i < sizeof(bad_fov) / sizeof(bad_fov[0]); i++) {
+		p.fov_deg = bad_fov[i];
+		expect_invalid(&p, 10, "field of view");
+	}
+	p.fov_deg = NAN;
+	expect_invalid(&p, 10, "");
+	p.fov_deg = 80;
+	expect_invalid(&p, 0, "size");
+	p.eye.x = INFINITY;
+	expect_invalid(&p, 10, "finite");
+	/* The extremes inside the range are fine. */
+	camera_params_default(&p);
+	p.fov_deg = 0.01;
+	assert_int_equal(camera_init(&c, &p, 10, &d), 0);
+	p.fov_deg = 179.9;
+	assert_int_equal(camera_init(&c, &p, 10, &d), 0);
+}
+
+/* The nearfar camera along +y from the origin (forward (0, 1, 0), right
+ * (1, 0, 0), up (0, 0, 1)) with the given near plane, aspect and fov. */
+static void init_nearfar(struct camera *c, double near, double aspect, double fov, int size)
+{
+	struct camera_params p;
+	struct diag d;
+
+	camera_params_default(&p);
+	p.eye = vec3_make(0, 0, 0);
+	p.look = vec3_make(0, 1, 0);
+	p.up = vec3_make(0, 0, 1);
+	p.fov_deg = fov;
+	p.near = near;
+	p.aspect = aspect;
+	diag_clear(&d);
+	assert_int_equal(camera_init(c, &p, size, &d), 0);
+}
+
+/* ASPECT 2 with FOVY 90 makes FOVX 180: no image plane is that wide, and
+ * scene-format.md refuses it.  Just below, it is fine. */
+static void test_camera_nearfar_fovx_180_refused(void **state)
+{
+	struct camera_params p;
+	struct camera c;
+	struct diag d;
+
+	(void)state;
+	camera_params_default(&p);
+	p.near = 1;
+	p.aspect = 2;
+	p.fov_deg = 90;
+	expect_invalid(&p, 4, "horizontal field of view");
+	p.fov_deg = 89.99;
+	assert_int_equal(camera_init(&c, &p, 4, &d), 0);
+	p.aspect = 1e308;
+	expect_invalid(&p, 4, "horizontal field of view");
+	p.aspect = -1;
+	expect_invalid(&p, 4, "aspect");
+	p.aspect = NAN;
+	expect_invalid(&p, 4, "aspect");
+	p.aspect = 0;
+	p.near = -1;
+	expect_invalid(&p, 4, "near");
+	p.near = INFINITY;
+	expect_invalid(&p, 4, "near");
+}
+
+/* A 4x4 image with ASPECT 2, NEAR 1, FOVY 60 (FOVX 120): the plane at
+ * distance 1 is 2 tan(60) = 2 sqrt 3 wide and 2 tan(30) = 2 / sqrt 3 high.
+ * Pixel centres sit at u = (-3/4, -1/4, 1/4, 3/4) sqrt 3 across and
+ * v = (3/4, 1/4, -1/4, -3/4) / sqrt 3 down, so the top-left pixel's ray
+ * starts on the plane at (-3/4 sqrt 3, 1, 3/4 / sqrt 3), |.|^2 = 27/16 + 1
+ * + 3/16 = 2.875, and points from the eye through it. */
+static void test_camera_nearfar_rays_by_hand(void **state)
+{
+	const double r3 = sqrt(3.0), len = sqrt(2.875);
+	struct camera c;
+	struct ray r;
+
+	(void)state;
+	init_nearfar(&c, 1, 2, 60, 4);
+	assert_near(c.half_width, r3, 1e-15);
+	assert_near(c.half_height, 1 / r3, 1e-15);
+	r = camera_ray(&c, 0, 0);
+	assert_vec3_near(r.origin, vec3_make(-0.75 * r3, 1, 0.75 / r3), 1e-15);
+	assert_vec3_near(r.dir, vec3_make(-0.75 * r3 / len, 1 / len, 0.75 / r3 / len), 1e-15);
+	r = camera_ray(&c, 3, 3);
+	assert_vec3_near(r.origin, vec3_make(0.75 * r3, 1, -0.75 / r3), 1e-15);
+	assert_vec3_near(r.dir, vec3_make(0.75 * r3 / len, 1 / len, -0.75 / r3 / len), 1e-15);
+	/* Next to the centre: (u, v) = (sqrt 3 / 4, 1 / (4 sqrt 3)), |.|^2 =
+	 * 3/16 + 1 + 1/48 = 58/48. */
+	r = camera_ray(&c, 2, 1);
+	assert_vec3_near(r.origin, vec3_make(0.25 * r3, 1, 0.25 / r3), 1e-15);
+	assert_vec3_near(r.dir, vec3_scale(vec3_make(0.25 * r3, 1, 0.25 / r3), 1 / sqrt(58.0 / 48)),
+			 1e-15);
+	/* The centre pixel of a 5x5 image starts NEAR ahead of the eye. */
+	init_nearfar(&c, 1, 2, 60, 5);
+	r = camera_ray(&c, 2, 2);
+	assert_vec3_near(r.origin, vec3_make(0, 1, 0), 1e-15);
+	assert_vec3_near(r.dir, vec3_make(0, 1, 0), 1e-15);
+	/* NEAR 2.5 moves the start, not the direction. */
+	init_nearfar(&c, 2.5, 2, 60, 4);
+	r = camera_ray(&c, 0, 0);
+	assert_vec3_near(r.origin, vec3_make(-1.875 * r3, 2.5, 1.875 / r3), 1e-14);
+	assert_vec3_near(r.dir, vec3_make(-0.75 * r3 / len, 1 / len, 0.75 / r3 / len), 1e-15);
+}
+
+/* The plane is centred on the view: a ray through a pixel and the one
+ * through its mirror image across the centre are mirror images, and the
+ * starts lie on the plane (forward . (origin - eye) = NEAR). */
+static void test_camera_nearfar_plane(void **state)
+{
+	struct camera c;
+	int px, py;
+
+	(void)state;
+	init_nearfar(&c, 3, 0.5, 100, 7);
+	for (py = 0; py < 7; py++) {
+		for (px = 0; px < 7; px++) {
+			struct ray a = camera_ray(&c, px, py), b = camera_ray(&c, 6 - px, 6 - py);
+			assert_near(a.origin.y, 3, 1e-15);
+			assert_vec3_near(a.origin, vec3_make(-b.origin.x, b.origin.y, -b.origin.z),
+					 1e-14);
+			assert_near(vec3_length(a.dir), 1, 1e-15);
+		}
+	}
+	/* FOVX 50: the outer pixel centres at 6/7 of tan(25) across, of
+	 * tan(50) up. */
+	assert_near(camera_ray(&c, 6, 3).origin.x, 3 * tan(25 * pi / 180) * 6 / 7, 1e-14);
+	assert_near(camera_ray(&c, 3, 0).origin.z, 3 * tan(50 * pi / 180) * 6 / 7, 1e-14);
+}
+
+/* near 0 and aspect 0 are the classic camera bit for bit, and so is an
+ * aspect of 1 (FOVX = FOVY) for the directions. */
+static void test_camera_classic_unchanged(void **state)
+{
+	struct camera_params p;
+	struct camera a, b;
+	struct diag d;
+	int px, py;
+
+	(void)state;
+	camera_params_default(&p);
+	assert_true(p.near == 0 && p.aspect == 0);
+	assert_int_equal(camera_init(&a, &p, 9, &d), 0);
+	p.aspect = 1;
+	assert_int_equal(camera_init(&b, &p, 9, &d), 0);
+	for (py = 0; py < 9; py++) {
+		for (px = 0; px < 9; px++) {
+			struct ray ra = camera_ray(&a, px, py), rb = camera_ray(&b, px, py);
+			double u = (px + 0.5) * a.pixel_scale - a.half_height;
+			double v = a.half_height - (py + 0.5) * a.pixel_scale;
+			struct vec3 w = vec3_normalize(vec3_add(a.forward,
+				vec3_add(vec3_scale(a.right, u), vec3_scale(a.up, v))));
+
+			assert_memory_equal(&ra.origin, &p.eye, sizeof(p.eye));
+			assert_memory_equal(&ra.dir, &w, sizeof(w));
+			assert_memory_equal(&rb, &ra, sizeof(ra));
+		}
+	}
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_camera_defaults),
+		cmocka_unit_test(test_camera_centre_pixel_looks_at_look_point),
+		cmocka_unit_test(test_camera_basis),
+		cmocka_unit_test(test_camera_up_is_up_right_is_right),
+		cmocka_unit_test(test_camera_field_of_view),
+		cmocka_unit_test(test_camera_size_one),
+		cmocka_unit_test(test_camera_custom_view),
+		cmocka_unit_test(test_camera_errors),
+		cmocka_unit_test(test_camera_nearfar_fovx_180_refused),
+		cmocka_unit_test(test_camera_nearfar_rays_by_hand),
+		cmocka_unit_test(test_camera_nearfar_plane),
+		cmocka_unit_test(test_camera_classic_unchanged),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}

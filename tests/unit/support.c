@@ -1,0 +1,103 @@
+/* Shared helpers for the cmocka tests. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "support.h"
+
+void support_assert_near(double a, double b, double eps, const char *expr,
+			 const char *file, int line)
+{
+	if (!(fabs(a - b) <= eps)) {
+		print_error("%s = %.17g, expected %.17g (within %g)\n", expr, a, b, eps);
+		_fail(file, line);
+	}
+}
+
+void support_assert_vec3_near(struct vec3 a, struct vec3 b, double eps, const char *expr,
+			      const char *file, int line)
+{
+	if (!(fabs(a.x - b.x) <= eps && fabs(a.y - b.y) <= eps && fabs(a.z - b.z) <= eps)) {
+		print_error("%s = (%.17g, %.17g, %.17g), expected (%.17g, %.17g, %.17g) within %g\n",
+			    expr, a.x, a.y, a.z, b.x, b.y, b.z, eps);
+		_fail(file, line);
+	}
+}
+
+struct ray support_ray(double ox, double oy, double oz, double dx, double dy, double dz)
+{
+	struct ray r;
+
+	r.origin = vec3_make(ox, oy, oz);
+	r.dir = vec3_make(dx, dy, dz);
+	return r;
+}
+
+char *support_export_pov(const struct shape *s, enum pov_finish finish)
+{
+	struct pov_options opt = { finish, false, { NULL, NULL } };
+	FILE *f = tmpfile();
+	char *text;
+	long n;
+
+	assert_non_null(f);
+	assert_int_equal(shape_export_pov(s, f, &opt), 0);
+	n = ftell(f);
+	assert_true(n > 0);
+	rewind(f);
+	text = malloc((size_t)n + 1);
+	assert_non_null(text);
+	assert_int_equal(fread(text, 1, (size_t)n, f), (size_t)n);
+	text[n] = '\0';
+	fclose(f);
+	return text;
+}
+
+struct scene *support_parse(const char *text)
+{
+	struct scene *s = NULL;
+	struct diag d;
+	int rc;
+
+	diag_clear(&d);
+	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, NULL, &s, &d);
+	if (rc < 0) {
+		print_error("parse failed: %s:%d:%d: %s\n", d.file, d.line, d.col, d.msg);
+		fail();
+	}
+	return s;
+}
+
+int support_parse_error(const char *text, struct diag *d)
+{
+	struct scene *s = NULL;
+	int rc;
+
+	diag_clear(d);
+	rc = scene_parse("test.txt", text, strlen(text), NULL, NULL, NULL, &s, d);
+	if (rc == 0) {
+		scene_destroy(s);
+		print_error("expected a parse error, the text parsed\n");
+		fail();
+	}
+	assert_null(s);
+	return rc;
+}
+
+int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
+		int argc, char **argv)
+{
+	struct CMUnitTest *chosen = malloc(n * sizeof(*chosen));
+	size_t i, k = 0;
+	int rc;
+
+	if (!chosen)
+		return 1;
+	for (i = 0; i < n; i++)
+		if (argc < 2 || strstr(tests[i].name, argv[1]))
+			chosen[k++] = tests[i];
+	rc = _cmocka_run_group_tests(group, chosen, k, NULL, NULL);
+	free(chosen);
+	return rc;
+}
