@@ -31,6 +31,7 @@ struct build_box {
 struct sah_bin {
 	struct build_box box;	/* empty while no ref falls in the bin */
 	size_t n;
+	size_t pad;		/* 64 bytes: a bin's address is a shift of its number */
 };
 
 /* A thread's bins for the split search, empty (every box empty, every

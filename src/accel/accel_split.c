@@ -188,6 +188,19 @@ void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box 
  * and for anything below, MINPD with the last bin's number caps it; an
  * axis that is not usable (its scale 0) fills its bin 0, which nothing
  * reads. */
+/* A ref's bounds (three pairs) grow a bin's box; the bins are 64 bytes
+ * apart, so a bin's address is one shift from its number. */
+static inline void bin_add(struct sah_bin *bin, __m128d a, __m128d m, __m128d h)
+{
+	double *d = bin->box.lo;
+	__m128d dm = _mm_loadu_pd(d + 2);
+
+	bin->n++;
+	_mm_storeu_pd(d, _mm_min_pd(a, _mm_loadu_pd(d)));
+	_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(m, dm), _mm_min_pd(m, dm)));
+	_mm_storeu_pd(d + 4, _mm_max_pd(h, _mm_loadu_pd(d + 4)));
+}
+
 static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
 		     const struct build_box *centres, const double scale[3], const bool usable[3],
 		     unsigned used[3])
@@ -196,11 +209,10 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 	const __m128d last = _mm_set1_pd(ACCEL_BINS - 1);
 	const __m128d lo01 = _mm_loadu_pd(centres->lo), lo2 = _mm_set_sd(centres->lo[2]);
 	const __m128d sc01 = _mm_loadu_pd(scale), sc2 = _mm_set_sd(scale[2]);
+	unsigned used0 = 0, used1 = 0, used2 = 0;
 	size_t i;
-	int axis;
 
 	(void)usable;
-	used[0] = used[1] = used[2] = 0;
 	for (i = 0; i < n; i++) {
 		const double *r = refs[i].lo;
 		__m128d a = _mm_loadu_pd(r), m = _mm_loadu_pd(r + 2), h = _mm_loadu_pd(r + 4);
@@ -210,24 +222,20 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 		__m128d f2 = _mm_mul_sd(_mm_sub_sd(c2, lo2), sc2);
 		__m128i k01 = _mm_cvttpd_epi32(_mm_min_pd(_mm_max_pd(f01, zero), last));
 		__m128i k2 = _mm_cvttpd_epi32(_mm_min_sd(_mm_max_sd(f2, zero), last));
-		int k[3];
+		unsigned b0 = (unsigned)_mm_cvtsi128_si32(k01);
+		unsigned b1 = (unsigned)_mm_cvtsi128_si32(_mm_srli_si128(k01, 4));
+		unsigned b2 = (unsigned)_mm_cvtsi128_si32(k2);
 
-		k[0] = _mm_cvtsi128_si32(k01);
-		k[1] = _mm_cvtsi128_si32(_mm_shuffle_epi32(k01, 1));
-		k[2] = _mm_cvtsi128_si32(k2);
-		used[0] |= 1u << k[0];
-		used[1] |= 1u << k[1];
-		used[2] |= 1u << k[2];
-		for (axis = 0; axis < 3; axis++) {
-			struct sah_bin *bin = &bins[axis][k[axis]];
-			double *d = bin->box.lo;
-			__m128d dm = _mm_loadu_pd(d + 2);
-			bin->n++;
-			_mm_storeu_pd(d, _mm_min_pd(a, _mm_loadu_pd(d)));
-			_mm_storeu_pd(d + 2, _mm_move_sd(_mm_max_pd(m, dm), _mm_min_pd(m, dm)));
-			_mm_storeu_pd(d + 4, _mm_max_pd(h, _mm_loadu_pd(d + 4)));
-		}
+		used0 |= 1u << b0;
+		used1 |= 1u << b1;
+		used2 |= 1u << b2;
+		bin_add(&bins[0][b0], a, m, h);
+		bin_add(&bins[1][b1], a, m, h);
+		bin_add(&bins[2][b2], a, m, h);
 	}
+	used[0] = used0;
+	used[1] = used1;
+	used[2] = used2;
 }
 #else
 /* Clamps before converting: with coordinates near DBL_MAX a centre or the
