@@ -93,34 +93,36 @@ static inline void box_grow(struct build_box *b, const struct build_box *o)
 	box_grow_by(b, o);
 }
 
-/* The float next to f towards +inf (up) or -inf, as nextafterf gives it
- * (a library call, and these run twelve times a node): one step of the
- * bit pattern, which orders floats of one sign by magnitude.  An
- * infinity steps to the largest finite float. */
-static inline float float_step(float f, bool up)
-{
-	uint32_t u;
-
-	if (f == 0.0f)
-		u = up ? 0x00000001u : 0x80000001u;
-	else {
-		memcpy(&u, &f, sizeof(u));
-		u = (f > 0.0f) == up ? u + 1 : u - 1;
-	}
-	memcpy(&f, &u, sizeof(f));
-	return f;
-}
-
+/* v rounded down (or up) to a float: the nearest float, stepped one bit
+ * pattern towards -inf (or +inf) when it lies on the wrong side of v, as
+ * nextafterf would (a library call, and these run twelve times a node).
+ * Floats of one sign are ordered by their patterns' magnitude; a zero
+ * steps to the smallest subnormal of the side, an infinity to the largest
+ * finite float.  Written with masks, not branches: whether the nearest
+ * float lies above v is a coin toss, and mispredicting it was most of
+ * the cost. */
 static inline float float_down(double v)
 {
 	float f = (float)v;
-	return (double)f > v ? float_step(f, false) : f;
+	uint32_t u, stepped;
+
+	memcpy(&u, &f, sizeof(u));
+	stepped = (u & 0x7fffffffu) == 0 ? 0x80000001u : u + ((u >> 31) << 1) - 1u;
+	u ^= (u ^ stepped) & -(uint32_t)((double)f > v);
+	memcpy(&f, &u, sizeof(f));
+	return f;
 }
 
 static inline float float_up(double v)
 {
 	float f = (float)v;
-	return (double)f < v ? float_step(f, true) : f;
+	uint32_t u, stepped;
+
+	memcpy(&u, &f, sizeof(u));
+	stepped = (u & 0x7fffffffu) == 0 ? 0x00000001u : u + 1u - ((u >> 31) << 1);
+	u ^= (u ^ stepped) & -(uint32_t)((double)f < v);
+	memcpy(&f, &u, sizeof(f));
+	return f;
 }
 
 /* box and centres grow to take in ref r and its centre. */
