@@ -303,10 +303,8 @@ static inline bool sah_sweep(const struct sah_bin bins[ACCEL_BINS], unsigned use
 			     double lo, double scale, double *best, double *out_pos)
 {
 	struct build_box left, acc;
-	double right_area[ACCEL_BINS];
-	size_t right_n[ACCEL_BINS], left_n = 0;
-	int used[ACCEL_BINS], n_used = 0, j;
-	bool found = false;
+	double right_area[ACCEL_BINS], right_n[ACCEL_BINS], left_n = 0.0, least = *best;
+	int used[ACCEL_BINS], n_used = 0, j, cut = -1;
 
 	/* Only the bins that hold refs matter (most bins of the many small
 	 * nodes are empty): a cut after an empty bin makes the same halves at
@@ -317,13 +315,15 @@ static inline bool sah_sweep(const struct sah_bin bins[ACCEL_BINS], unsigned use
 	if (n_used < 2)
 		return false;
 	/* Sweep from the right for the right-hand areas and counts of the
-	 * cuts after used[0 .. n_used - 2], then from the left. */
+	 * cuts after used[0 .. n_used - 2], then from the left.  The counts
+	 * are summed as doubles, which hold them exactly; the best cut is
+	 * kept in locals and its position worked out once. */
 	acc = bins[used[n_used - 1]].box;
-	right_n[n_used - 2] = bins[used[n_used - 1]].n;
+	right_n[n_used - 2] = (double)bins[used[n_used - 1]].n;
 	right_area[n_used - 2] = box_area(&acc);
 	for (j = n_used - 2; j > 0; j--) {
 		box_grow(&acc, &bins[used[j]].box);
-		right_n[j - 1] = right_n[j] + bins[used[j]].n;
+		right_n[j - 1] = right_n[j] + (double)bins[used[j]].n;
 		right_area[j - 1] = box_area(&acc);
 	}
 	left = bins[used[0]].box;
@@ -331,15 +331,18 @@ static inline bool sah_sweep(const struct sah_bin bins[ACCEL_BINS], unsigned use
 		double cost;
 		if (j > 0)
 			box_grow(&left, &bins[used[j]].box);
-		left_n += bins[used[j]].n;
-		cost = (double)left_n * box_area(&left) + (double)right_n[j] * right_area[j];
-		if (cost < *best) {
-			*best = cost;
-			found = true;
-			*out_pos = lo + (used[j] + 1) / scale;
+		left_n += (double)bins[used[j]].n;
+		cost = left_n * box_area(&left) + right_n[j] * right_area[j];
+		if (cost < least) {
+			least = cost;
+			cut = j;
 		}
 	}
-	return found;
+	if (cut < 0)
+		return false;
+	*best = least;
+	*out_pos = lo + (used[cut] + 1) / scale;
+	return true;
 }
 
 /* Chooses an axis and a bin boundary by the surface area heuristic: the
