@@ -279,44 +279,18 @@ static size_t squeeze_nodes(struct bvh_node *nodes)
 	return next;
 }
 
-/* Refs are bounded in runs of this many, while they are still in the
- * first-level cache. */
-#define COLLECT_RUN 256
-
 /* The refs of the bounded shapes, in the scene's order, with their box and
  * centre bounds, and the list of the unbounded ones. */
-static int collect_refs(struct shape *const *shapes, size_t n_shapes, struct accel *a,
+static int collect_refs(struct shape *const *shapes, size_t n_shapes, int threads, struct accel *a,
 			struct build *b)
 {
-	size_t i, n_unbounded = 0, bounded_done = 0;
+	size_t i, n_unbounded;
 
 	b->refs = rt_reallocarray(NULL, n_shapes, sizeof(*b->refs));
 	if (!b->refs)
 		return -RT_E_NOMEM;
-	accel_refs_bounds(b->refs, 0, &b->box, &b->centres);
-	for (i = 0; i < n_shapes; i++) {
-		if (a->n_bounded - bounded_done >= COLLECT_RUN) {
-			accel_refs_bounds_grow(b->refs + bounded_done, a->n_bounded - bounded_done,
-					       &b->box, &b->centres);
-			bounded_done = a->n_bounded;
-		}
-		struct build_ref *ref = &b->refs[a->n_bounded];
-		struct aabb box;
-		if (shape_bounds(shapes[i], &box)) {
-			ref->lo[0] = box.min.x;
-			ref->lo[1] = box.min.y;
-			ref->lo[2] = box.min.z;
-			ref->hi[0] = box.max.x;
-			ref->hi[1] = box.max.y;
-			ref->hi[2] = box.max.z;
-			ref->shape = shapes[i];
-			a->n_bounded++;
-		} else {
-			n_unbounded++;
-		}
-	}
-	accel_refs_bounds_grow(b->refs + bounded_done, a->n_bounded - bounded_done, &b->box,
-			       &b->centres);
+	a->n_bounded = accel_collect_refs(b->refs, shapes, n_shapes, threads, &b->box, &b->centres);
+	n_unbounded = n_shapes - a->n_bounded;
 	a->unbounded = rt_reallocarray(NULL, n_unbounded, sizeof(*a->unbounded));
 	if (!a->unbounded)
 		return -RT_E_NOMEM;
@@ -342,7 +316,7 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 	a = rt_calloc(1, sizeof(*a));
 	if (!a)
 		goto out_nomem;
-	if (collect_refs(shapes, n_shapes, a, &b) < 0)
+	if (collect_refs(shapes, n_shapes, threads, a, &b) < 0)
 		goto out_free;
 	if (a->n_bounded > 0) {
 		const struct shape **leaf_order = (const struct shape **)(void *)b.refs;

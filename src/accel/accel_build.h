@@ -50,6 +50,15 @@ void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box 
  * grows them: the bounds of a set met in parts, the same to the bit. */
 void accel_refs_bounds_grow(const struct build_ref *refs, size_t n, struct build_box *box,
 			    struct build_box *centres);
+/* box and centres grown by another set's bounds (o_box, o_centres), as
+ * by that set's refs one by one after box and centres' own. */
+void accel_boxes_grow(struct build_box *box, struct build_box *centres, const struct build_box *o_box,
+		      const struct build_box *o_centres);
+/* The refs of the bounded shapes among shapes[0, n_shapes), in order, at
+ * the front of refs (room for n_shapes), with their box and centre
+ * bounds, found with up to `threads` threads; returns how many. */
+size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, size_t n_shapes,
+			  int threads, struct build_box *box, struct build_box *centres);
 /* Where to split refs[0, n), whose box and centre bounds are given
  * (sorting them so), or 0 to make them a leaf; bounds receives the box
  * and centre bounds of both parts. */

@@ -167,6 +167,13 @@ void accel_refs_bounds_grow(const struct build_ref *refs, size_t n, struct build
 		bounds_add_ref(box, centres, &refs[i]);
 }
 
+void accel_boxes_grow(struct build_box *box, struct build_box *centres, const struct build_box *o_box,
+		      const struct build_box *o_centres)
+{
+	box_grow(box, o_box);
+	box_grow(centres, o_centres);
+}
+
 void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box *box,
 			struct build_box *centres)
 {
