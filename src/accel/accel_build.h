@@ -65,6 +65,11 @@ size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, s
 size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
 		    const struct build_box *centres, struct build_box bounds[4],
 		    struct accel_bins *bins);
+/* accel_choose_split without the short cut for two refs: every node
+ * binned, as the short cut must match (for the tests). */
+size_t accel_choose_split_binned(struct build_ref *refs, size_t n, int depth,
+				 const struct build_box *box, const struct build_box *centres,
+				 struct build_box bounds[4], struct accel_bins *bins);
 /* Child c's box in the node, rounded outwards to floats. */
 void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *box);
 

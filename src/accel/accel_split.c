@@ -183,6 +183,20 @@ void accel_refs_bounds(const struct build_ref *refs, size_t n, struct build_box 
 }
 
 
+/* Clamps before converting: with coordinates near DBL_MAX a centre or the
+ * extent can overflow to inf and the product be NaN, and converting that
+ * (or anything outside int) is undefined.  The SSE2 binning's clamp
+ * (MAXPD with 0, MINPD with the last bin, truncation) gives the same
+ * number for every f. */
+static inline int bin_of(double c, double lo, double scale)
+{
+	double f = (c - lo) * scale;
+
+	if (!(f >= 0.0))
+		return 0;
+	return f >= ACCEL_BINS ? ACCEL_BINS - 1 : (int)f;
+}
+
 /* Counts refs[0, n) into the (empty) bins of the usable axes, grows each
  * bin's box by its refs and sets used[axis]'s bit b for each bin b filled.
  * A bin's box is set by its first ref (the same as growing an empty box by
@@ -247,18 +261,6 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 	used[2] = used2;
 }
 #else
-/* Clamps before converting: with coordinates near DBL_MAX a centre or the
- * extent can overflow to inf and the product be NaN, and converting that
- * (or anything outside int) is undefined. */
-static int bin_of(double c, double lo, double scale)
-{
-	double f = (c - lo) * scale;
-
-	if (!(f >= 0.0))
-		return 0;
-	return f >= ACCEL_BINS ? ACCEL_BINS - 1 : (int)f;
-}
-
 static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
 		     const struct build_box *centres, const double scale[3], const bool usable[3],
 		     unsigned used[3])
@@ -585,15 +587,65 @@ void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *b
 /* Where to split refs[0, n), whose box and centre bounds are
  * given (sorting them so), or 0 to make them a leaf; bounds receives the
  * box and centre bounds of both parts. */
-size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
-		    const struct build_box *centres, struct build_box bounds[4],
-		    struct accel_bins *bins)
+/* The box a bin holding only ref r has, as the binning makes it. */
+static inline void bin_box_of(struct build_box *b, const struct build_ref *r)
+{
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+	box_empty(b);
+	box_grow_ref(b, r);
+#else
+	memcpy(b, r, sizeof(*b));
+#endif
+}
+
+/* sah_split for two refs (a third of all nodes), without the bins: on an
+ * axis where their centres differ the one at the centres' minimum falls
+ * in bin 0 and the other in bin bin_of(maximum), the only cut is after
+ * bin 0 and costs the sum of their bins' areas, the same on every such
+ * axis (the sum is the same whichever ref is on the left), so the first
+ * axis whose bins differ wins if that beats a leaf. */
+static bool pair_split(const struct build_ref refs[2], const struct build_box *box,
+		       const struct build_box *centres, int *out_axis, double *out_pos)
+{
+	struct build_box b0, b1;
+	double cost;
+	int axis;
+
+	bin_box_of(&b0, &refs[0]);
+	bin_box_of(&b1, &refs[1]);
+	for (axis = 0; axis < 3; axis++) {
+		double extent = centres->hi[axis] - centres->lo[axis], scale;
+		if (!(extent > 0.0))
+			continue;
+		scale = ACCEL_BINS / extent;
+		if (bin_of(centres->hi[axis], centres->lo[axis], scale) == 0)
+			continue;
+		if (ref_centre(&refs[0], axis) == centres->lo[axis])
+			cost = 1.0 * box_area(&b0) + 1.0 * box_area(&b1);
+		else
+			cost = 1.0 * box_area(&b1) + 1.0 * box_area(&b0);
+		if (!(cost < 2.0 * box_area(box)))
+			return false;
+		*out_axis = axis;
+		*out_pos = centres->lo[axis] + 1 / scale;
+		return true;
+	}
+	return false;
+}
+
+static size_t choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
+			   const struct build_box *centres, struct build_box bounds[4],
+			   struct accel_bins *bins, bool pairs)
 {
 	size_t split = 0;
 	double pos = 0.0;
 	int axis = 0;
+	bool found = false;
 
-	if (n > 1 && depth < ACCEL_SAH_DEPTH && sah_split(refs, n, box, centres, bins->bin, &axis, &pos))
+	if (n > 1 && depth < ACCEL_SAH_DEPTH)
+		found = n == 2 && pairs ? pair_split(refs, box, centres, &axis, &pos) :
+			sah_split(refs, n, box, centres, bins->bin, &axis, &pos);
+	if (found)
 		split = partition(refs, n, axis, pos, bounds);
 	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX) {
 		split = median_split(refs, n, centres);
@@ -601,4 +653,18 @@ size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const str
 		accel_refs_bounds(refs + split, n - split, &bounds[2], &bounds[3]);
 	}
 	return split == n ? 0 : split;
+}
+
+size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
+			  const struct build_box *centres, struct build_box bounds[4],
+			  struct accel_bins *bins)
+{
+	return choose_split(refs, n, depth, box, centres, bounds, bins, true);
+}
+
+size_t accel_choose_split_binned(struct build_ref *refs, size_t n, int depth,
+				 const struct build_box *box, const struct build_box *centres,
+				 struct build_box bounds[4], struct accel_bins *bins)
+{
+	return choose_split(refs, n, depth, box, centres, bounds, bins, false);
 }
