@@ -65,6 +65,11 @@ size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, s
 size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
 		    const struct build_box *centres, struct build_box bounds[4],
 		    struct accel_bins *bins);
+/* Moves the refs whose centre lies below pos along axis to the front and
+ * returns how many there are; bounds receives the box and the centre
+ * bounds of the front part, then of the back part. */
+size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
+		       struct build_box bounds[4]);
 /* accel_choose_split without the short cut for two refs: every node
  * binned, as the short cut must match (for the tests). */
 size_t accel_choose_split_binned(struct build_ref *refs, size_t n, int depth,

@@ -468,8 +468,8 @@ static void side_store(const struct side_regs *s, struct build_box *box, struct 
  * 16-byte load of what narrower stores wrote waits for them to reach the
  * cache), and each ref is read once.  The centre along axis is the plain
  * C's (lo + hi) * 0.5, compared with pos as it does. */
-static size_t partition(struct build_ref *refs, size_t n, int axis, double pos,
-			struct build_box bounds[4])
+size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
+		       struct build_box bounds[4])
 {
 	const __m128d half = _mm_set1_pd(0.5), p = _mm_set1_pd(pos);
 	struct side_regs left, right;
@@ -505,8 +505,8 @@ static size_t partition(struct build_ref *refs, size_t n, int axis, double pos,
 	return i;
 }
 #else
-static size_t partition(struct build_ref *refs, size_t n, int axis, double pos,
-			struct build_box bounds[4])
+size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
+		       struct build_box bounds[4])
 {
 	size_t i = 0, j = n;
 
@@ -646,7 +646,7 @@ static size_t choose_split(struct build_ref *refs, size_t n, int depth, const st
 		found = n == 2 && pairs ? pair_split(refs, box, centres, &axis, &pos) :
 			sah_split(refs, n, box, centres, bins->bin, &axis, &pos);
 	if (found)
-		split = partition(refs, n, axis, pos, bounds);
+		split = accel_partition(refs, n, axis, pos, bounds);
 	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX) {
 		split = median_split(refs, n, centres);
 		accel_refs_bounds(refs, split, &bounds[0], &bounds[1]);
