@@ -224,9 +224,9 @@ static inline void bin_add(struct sah_bin *bin, __m128d a, __m128d m, __m128d h)
 	_mm_storeu_pd(d + 4, _mm_max_pd(h, _mm_loadu_pd(d + 4)));
 }
 
-static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
-		     const struct build_box *centres, const double scale[3], const bool usable[3],
-		     unsigned used[3])
+static inline void bin_run(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs,
+			   size_t n, const struct build_box *centres, const double scale[3],
+			   unsigned used[3], bool track)
 {
 	const __m128d half = _mm_set1_pd(0.5), zero = _mm_setzero_pd();
 	const __m128d last = _mm_set1_pd(ACCEL_BINS - 1);
@@ -235,7 +235,6 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 	unsigned used0 = 0, used1 = 0, used2 = 0;
 	size_t i;
 
-	(void)usable;
 	for (i = 0; i < n; i++) {
 		const double *r = refs[i].lo;
 		__m128d a = _mm_loadu_pd(r), m = _mm_loadu_pd(r + 2), h = _mm_loadu_pd(r + 4);
@@ -249,9 +248,11 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 		unsigned b1 = (unsigned)_mm_cvtsi128_si32(_mm_srli_si128(k01, 4));
 		unsigned b2 = (unsigned)_mm_cvtsi128_si32(k2);
 
-		used0 |= 1u << b0;
-		used1 |= 1u << b1;
-		used2 |= 1u << b2;
+		if (track) {
+			used0 |= 1u << b0;
+			used1 |= 1u << b1;
+			used2 |= 1u << b2;
+		}
 		bin_add(&bins[0][b0], a, m, h);
 		bin_add(&bins[1][b1], a, m, h);
 		bin_add(&bins[2][b2], a, m, h);
@@ -259,6 +260,27 @@ static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref 
 	used[0] = used0;
 	used[1] = used1;
 	used[2] = used2;
+}
+
+/* A node of many refs fills most bins: its bins in use are found from
+ * their counts afterwards rather than marked ref by ref. */
+#define BIN_MARK_MAX 64
+
+static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
+		     const struct build_box *centres, const double scale[3], const bool usable[3],
+		     unsigned used[3])
+{
+	int axis, b;
+
+	(void)usable;
+	if (n <= BIN_MARK_MAX) {
+		bin_run(bins, refs, n, centres, scale, used, true);
+		return;
+	}
+	bin_run(bins, refs, n, centres, scale, used, false);
+	for (axis = 0; axis < 3; axis++)
+		for (b = 0; b < ACCEL_BINS; b++)
+			used[axis] |= (unsigned)(bins[axis][b].n > 0) << b;
 }
 #else
 static void bin_refs(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs, size_t n,
