@@ -17,7 +17,7 @@
 #define COLLECT_RUN 256
 /* Each thread takes at least this many shapes: below that, starting a
  * thread costs more than it saves. */
-#define COLLECT_PARALLEL_MIN 8192
+#define COLLECT_PARALLEL_MIN 4096
 #define COLLECT_THREADS_MAX 64
 
 /* A run of the scene: shapes[first, first + n), whose refs go to
