@@ -202,15 +202,6 @@ static inline int bin_of(double c, double lo, double scale)
  * A bin's box is set by its first ref (the same as growing an empty box by
  * it). */
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
-/* The same bins, with each ref's bounds loaded once for all three axes,
- * its three centres and bin numbers computed two lanes at a time, and
- * each bin an empty box so that every ref grows its bin alike (MINPD
- * of a finite bound and +inf is the bound, as the plain C's copy; the
- * bins come empty, see struct accel_bins).  The
- * clamp is bin_of's: MAXPD with 0 gives 0 for a NaN (its second operand)
- * and for anything below, MINPD with the last bin's number caps it; an
- * axis that is not usable (its scale 0) fills its bin 0, which nothing
- * reads. */
 /* A ref's bounds (three pairs) grow a bin's box; the bins are 64 bytes
  * apart, so a bin's address is one shift from its number. */
 static inline void bin_add(struct sah_bin *bin, __m128d a, __m128d m, __m128d h)
@@ -224,6 +215,16 @@ static inline void bin_add(struct sah_bin *bin, __m128d a, __m128d m, __m128d h)
 	_mm_storeu_pd(d + 4, _mm_max_pd(h, _mm_loadu_pd(d + 4)));
 }
 
+/* The same bins, with each ref's bounds loaded once for all three axes,
+ * its three centres and bin numbers computed two lanes at a time, and
+ * each bin an empty box so that every ref grows its bin alike (MINPD
+ * of a finite bound and +inf is the bound, as the plain C's copy; the
+ * bins come empty, see struct accel_bins).  The
+ * clamp is bin_of's: MAXPD with 0 gives 0 for a NaN (its second operand)
+ * and for anything below, MINPD with the last bin's number caps it; an
+ * axis that is not usable (its scale 0) fills its bin 0, which nothing
+ * reads.  The bins in use are marked as the refs fill them (track) or, for
+ * a big node, found from the counts afterwards. */
 static inline void bin_run(struct sah_bin bins[3][ACCEL_BINS], const struct build_ref *refs,
 			   size_t n, const struct build_box *centres, const double scale[3],
 			   unsigned used[3], bool track)
@@ -510,6 +511,7 @@ size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
 			    _mm_movemask_pd(_mm_cmplt_sd(c2, p)) << 2;
 
 		if (below >> axis & 1) {
+			/* A store where cur came from, unless from the back. */
 			side_add(&left, cur, c01, c2);
 			ref_store(&refs[i], cur);
 			if (++i < j)
