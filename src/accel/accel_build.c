@@ -89,8 +89,10 @@ static void build_child(struct build *b, struct build_pool *pool, struct accel_b
 			const struct build_box *box, const struct build_box *centres)
 {
 	struct build_box bounds[4];
-	size_t split = accel_choose_split(b->refs + first, n, depth, box, centres, bounds, bins);
+	size_t split;
 
+	/* One ref is a leaf (half the children): no search. */
+	split = n > 1 ? accel_choose_split(b->refs + first, n, depth, box, centres, bounds, bins) : 0;
 	if (split == 0) {
 		b->nodes[parent].slot[c] = leaf_slot(b, first, n);
 		return;
