@@ -1,10 +1,12 @@
 /* The image loop: the job's rectangle cut into 16x16 blocks that threads
- * take from a shared counter, one ray through each pixel's centre, and the
- * conversion of colours to bytes.  The image does not depend on the number
- * of threads. */
+ * take from a shared counter, one ray through each pixel's centre, the
+ * conversion of colours to bytes, and the word that a band of rows is
+ * final (for a writer that works beside the render).  The image does not
+ * depend on the number of threads. */
 #include <pthread.h>
 #include <string.h>
 
+#include "base/alloc.h"
 #include "render/samples.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
@@ -37,6 +39,7 @@ struct render_shared {
 	struct image *img;
 	long next_block;		/* taken with an atomic add */
 	long blocks_done;
+	long *band_left;		/* blocks not yet rendered per band; NULL: no bands */
 };
 
 #define RENDER_MAX_THREADS 64
@@ -49,6 +52,7 @@ struct render_shared {
 struct render_worker {
 	struct render_shared *shared;
 	struct ray_counts counts;
+	int index;			/* 0 .. threads - 1 */
 	pthread_t thread;
 };
 
@@ -96,6 +100,55 @@ static long render_block_count(const struct render_job *job)
 	       ((job->y1 - job->y0 + RENDER_BLOCK - 1) / RENDER_BLOCK);
 }
 
+/* The bands that the rows [r0, r0 + RENDER_BLOCK) of the rectangle
+ * (clipped to it) meet. */
+static void render_bands_of(const struct render_job *job, int r0, int *b0, int *b1)
+{
+	int r1 = r0 + RENDER_BLOCK < job->y1 - job->y0 ? r0 + RENDER_BLOCK : job->y1 - job->y0;
+
+	*b0 = r0 / job->band_rows;
+	*b1 = (r1 - 1) / job->band_rows;
+}
+
+/* Every band's count of the blocks that cover part of it; NULL when the
+ * job wants no bands, or there is no memory (then rc is -RT_E_NOMEM). */
+static long *render_bands_alloc(const struct render_job *job, int *rc)
+{
+	int rows = job->y1 - job->y0, r, b, b0, b1;
+	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
+	long *left;
+
+	*rc = 0;
+	if (!job->band_done || job->band_rows < 1)
+		return NULL;
+	left = rt_calloc((size_t)((rows + job->band_rows - 1) / job->band_rows), sizeof(*left));
+	if (!left) {
+		*rc = -RT_E_NOMEM;
+		return NULL;
+	}
+	for (r = 0; r < rows; r += RENDER_BLOCK) {
+		render_bands_of(job, r, &b0, &b1);
+		for (b = b0; b <= b1; b++)
+			left[b] += blocks_x;
+	}
+	return left;
+}
+
+/* Block `block` is rendered: the bands it was the last of are told.  The
+ * acquire-release counts make the other threads' pixels of the band
+ * visible to the thread that tells it. */
+static void render_bands_count(struct render_shared *sh, long block, int thread)
+{
+	const struct render_job *job = sh->job;
+	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
+	int b, b0, b1;
+
+	render_bands_of(job, (int)(block / blocks_x) * RENDER_BLOCK, &b0, &b1);
+	for (b = b0; b <= b1; b++)
+		if (__atomic_sub_fetch(&sh->band_left[b], 1, __ATOMIC_ACQ_REL) == 0)
+			job->band_done(job->band_ctx, b, thread);
+}
+
 /* Renders blocks until none are left or the job is cancelled; only the
  * calling thread reports progress. */
 static void render_take_blocks(struct render_worker *w, bool report)
@@ -114,6 +167,8 @@ static void render_take_blocks(struct render_worker *w, bool report)
 		if (t >= blocks)
 			break;
 		render_block(job, sh->img, t, &counts);
+		if (sh->band_left)
+			render_bands_count(sh, t, w->index);
 		done = __atomic_add_fetch(&sh->blocks_done, 1, __ATOMIC_RELAXED);
 		if (report && job->progress)
 			job->progress(job->progress_ctx, done, blocks);
@@ -144,7 +199,7 @@ int render_image(const struct render_job *job, struct image *img,
 {
 	struct render_worker workers[RENDER_MAX_THREADS];
 	struct render_shared shared;
-	int threads = job->threads, started = 0, i;
+	int threads = job->threads, started = 0, i, rc;
 	long blocks;
 
 	if (!job->scene->accel)
@@ -163,9 +218,13 @@ int render_image(const struct render_job *job, struct image *img,
 	memset(&shared, 0, sizeof(shared));
 	shared.job = job;
 	shared.img = img;
+	shared.band_left = render_bands_alloc(job, &rc);
+	if (rc < 0)
+		return diag_fail(d, RT_E_NOMEM, "out of memory");
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;
+		workers[i].index = i;
 	}
 	/* The calling thread is worker 0; the others are started here. */
 	for (i = 1; i < threads; i++) {
@@ -176,6 +235,7 @@ int render_image(const struct render_job *job, struct image *img,
 	render_take_blocks(&workers[0], true);
 	for (i = 1; i <= started; i++)
 		pthread_join(workers[i].thread, NULL);
+	rt_free(shared.band_left);
 	if (job->progress)
 		job->progress(job->progress_ctx, shared.blocks_done, blocks);
 	if (counts) {
