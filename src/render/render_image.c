@@ -7,28 +7,27 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "render/camera_span.h"
 #include "render/samples.h"
+#include "render/shade_math.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
 
 /* lround(255 c) for c in [0, 1], without the library call: v - trunc(v)
  * is exact for v in [0, 255], so comparing it with 0.5 rounds half away
- * from zero exactly as lround does.  NaN gives 0, as lround's result cast
- * to a byte does. */
+ * from zero exactly as lround does.  (NaN was made 0 by the clamp, as
+ * lround's result cast to a byte would be.) */
 static uint8_t render_channel(double c)
 {
 	double v = 255.0 * c;
-	int i;
+	int i = (int)v;
 
-	if (!(v > 0.0))
-		return 0;
-	i = (int)v;
 	return (uint8_t)(i + (v - (double)i >= 0.5));
 }
 
 void render_color_to_rgb8(struct color c, uint8_t out[3])
 {
-	c = color_clamp(c);
+	c = render_clamp(c);
 	out[0] = render_channel(c.r);
 	out[1] = render_channel(c.g);
 	out[2] = render_channel(c.b);
@@ -48,6 +47,9 @@ struct render_shared {
  * and shapes they meet are still in the cache (100k primitives, one
  * thread: 1.06 s -> 1.00 s, median of 7). */
 #define RENDER_BLOCK 16
+#if RENDER_BLOCK > CAMERA_SPAN_MAX
+#error "a block row must fit in a camera span"
+#endif
 
 struct render_worker {
 	struct render_shared *shared;
@@ -70,25 +72,26 @@ static void render_block(const struct render_job *job, struct image *img, long b
 	int ty0 = job->y0 + (int)(block / blocks_x) * RENDER_BLOCK;
 	int tx1 = tx0 + RENDER_BLOCK < job->x1 ? tx0 + RENDER_BLOCK : job->x1;
 	int ty1 = ty0 + RENDER_BLOCK < job->y1 ? ty0 + RENDER_BLOCK : job->y1;
+	struct camera_span span;
 	int x, y;
 
 	if (job->samples > 1) {
 		render_block_samples(job, img, tx0, ty0, tx1, ty1, counts);
 		return;
 	}
+	camera_span_init(&span, job->camera, tx0, tx1);
 	for (y = ty0; y < ty1; y++) {
 		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
-		struct ray next = camera_ray(job->camera, tx0, y);
+		struct ray rays[RENDER_BLOCK];
+
+		/* The row's rays all at once: their square roots and divisions
+		 * run side by side, and beside the first traces. */
+		camera_span_rays(&span, job->camera, y, rays);
 		for (x = tx0; x < tx1; x++) {
-			struct ray r = next;
 			struct color c;
-			/* The next pixel's ray is made before this one is traced:
-			 * its square root and division then run beside the trace
-			 * instead of holding up the next one. */
-			if (x + 1 < tx1)
-				next = camera_ray(job->camera, x + 1, y);
+
 			counts->primary++;
-			c = render_trace(job->scene, &job->settings, &r, 1, counts);
+			c = render_trace(job->scene, &job->settings, &rays[x - tx0], 1, counts);
 			render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
 		}
 	}
