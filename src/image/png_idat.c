@@ -39,7 +39,7 @@ struct png_idat_strip {
 	uLong adler;
 	int status;		/* 0, or RT_E_NOMEM when zlib had no memory */
 	bool done;		/* compressed, well or not (status says) */
-	int bands_final;	/* atomic: how many of the bands it needs are final */
+	int bands_final;	/* how many of the bands it needs are final */
 };
 
 /* One thread's compressor, kept from strip to strip: the deflate state is
@@ -59,7 +59,8 @@ struct png_idat_strips {
 	int n_strips;
 	struct png_idat_coder *coders;
 	int n_coders;
-	int next;		/* atomic: the next strip png_idat_take looks at */
+	pthread_mutex_t lock;	/* over the strips' bands_final */
+	int next;		/* atomic: the next strip a finishing thread looks at */
 };
 
 static voidpf png_idat_zalloc(voidpf opaque, uInt items, uInt size)
@@ -170,9 +171,10 @@ void png_idat_strips_free(struct png_idat_strips *st)
 
 	if (!st)
 		return;
-	for (i = 0; i < st->n_coders; i++)
+	pthread_mutex_destroy(&st->lock);
+	for (i = 0; st->coders && i < st->n_coders; i++)
 		png_idat_coder_free(&st->coders[i]);
-	for (i = 0; i < st->n_strips; i++)
+	for (i = 0; st->strips && i < st->n_strips; i++)
 		rt_free(st->strips[i].out);
 	rt_free(st->coders);
 	rt_free(st->strips);
@@ -190,6 +192,7 @@ int png_idat_strips_open(const struct image *img, int threads, struct png_idat_s
 	st = rt_calloc(1, sizeof(*st));
 	if (!st)
 		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
+	pthread_mutex_init(&st->lock, NULL);
 	st->img = img;
 	st->n_strips = (img->height + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS;
 	/* The compression after the fact (png_idat_strips_finish) uses up to
@@ -216,20 +219,22 @@ out_nomem:
 
 /* Strip s needs its own rows and the row above them (the Up filter's):
  * band s, and band s - 1 unless it is the first.  Whoever makes the last
- * of them final compresses it; the acquire-release counts make every
- * row's pixels visible to that thread. */
+ * of them final compresses it, outside the lock; the lock (once a band)
+ * makes every row's pixels visible to that thread. */
 void png_idat_strips_band_done(struct png_idat_strips *st, int band, int thread)
 {
+	bool ready[2] = { false, false };
 	int s;
 
-	if (thread < 0 || thread >= st->n_coders)
+	if (thread < 0 || thread >= st->n_coders || band < 0 || band >= st->n_strips)
 		return;
-	for (s = band; s <= band + 1 && s < st->n_strips; s++) {
-		int need = s == 0 ? 1 : 2;
-
-		if (__atomic_add_fetch(&st->strips[s].bands_final, 1, __ATOMIC_ACQ_REL) == need)
+	pthread_mutex_lock(&st->lock);
+	for (s = band; s <= band + 1 && s < st->n_strips; s++)
+		ready[s - band] = ++st->strips[s].bands_final == (s == 0 ? 1 : 2);
+	pthread_mutex_unlock(&st->lock);
+	for (s = band; s <= band + 1 && s < st->n_strips; s++)
+		if (ready[s - band])
 			png_idat_strip_run(st, s, &st->coders[thread]);
-	}
 }
 
 struct png_idat_worker {

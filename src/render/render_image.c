@@ -4,6 +4,7 @@
  * final (for a writer that works beside the render).  The image does not
  * depend on the number of threads. */
 #include <pthread.h>
+#include <stdbool.h>
 #include <string.h>
 
 #include "base/alloc.h"
@@ -39,6 +40,7 @@ struct render_shared {
 	long next_block;		/* taken with an atomic add */
 	long blocks_done;
 	long *band_left;		/* blocks not yet rendered per band; NULL: no bands */
+	pthread_mutex_t band_lock;	/* over band_left */
 };
 
 #define RENDER_MAX_THREADS 64
@@ -137,18 +139,25 @@ static long *render_bands_alloc(const struct render_job *job, int *rc)
 	return left;
 }
 
-/* Block `block` is rendered: the bands it was the last of are told.  The
- * acquire-release counts make the other threads' pixels of the band
- * visible to the thread that tells it. */
+/* Block `block` is rendered: the bands it was the last of are told (a
+ * block's 16 rows meet at most 16 bands).  The counts are kept under a
+ * lock, taken once a block, so that every thread's pixels of a band are
+ * visible to the thread that tells it, as helgrind can see (it does not
+ * see the ordering that atomic counts would give). */
 static void render_bands_count(struct render_shared *sh, long block, int thread)
 {
 	const struct render_job *job = sh->job;
 	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
+	bool finished[RENDER_BLOCK];
 	int b, b0, b1;
 
 	render_bands_of(job, (int)(block / blocks_x) * RENDER_BLOCK, &b0, &b1);
+	pthread_mutex_lock(&sh->band_lock);
 	for (b = b0; b <= b1; b++)
-		if (__atomic_sub_fetch(&sh->band_left[b], 1, __ATOMIC_ACQ_REL) == 0)
+		finished[b - b0] = --sh->band_left[b] == 0;
+	pthread_mutex_unlock(&sh->band_lock);
+	for (b = b0; b <= b1; b++)
+		if (finished[b - b0])
 			job->band_done(job->band_ctx, b, thread);
 }
 
@@ -224,6 +233,7 @@ int render_image(const struct render_job *job, struct image *img,
 	shared.band_left = render_bands_alloc(job, &rc);
 	if (rc < 0)
 		return diag_fail(d, RT_E_NOMEM, "out of memory");
+	pthread_mutex_init(&shared.band_lock, NULL);
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;
@@ -238,6 +248,7 @@ int render_image(const struct render_job *job, struct image *img,
 	render_take_blocks(&workers[0], true);
 	for (i = 1; i <= started; i++)
 		pthread_join(workers[i].thread, NULL);
+	pthread_mutex_destroy(&shared.band_lock);
 	rt_free(shared.band_left);
 	if (job->progress)
 		job->progress(job->progress_ctx, shared.blocks_done, blocks);
