@@ -26,12 +26,18 @@ static uint8_t render_channel(double c)
 	return (uint8_t)(i + (v - (double)i >= 0.5));
 }
 
-void render_color_to_rgb8(struct color c, uint8_t out[3])
+/* Inline in the block loop; render_color_to_rgb8 for everyone else. */
+static inline void render_rgb8(struct color c, uint8_t out[3])
 {
 	c = render_clamp(c);
 	out[0] = render_channel(c.r);
 	out[1] = render_channel(c.g);
 	out[2] = render_channel(c.b);
+}
+
+void render_color_to_rgb8(struct color c, uint8_t out[3])
+{
+	render_rgb8(c, out);
 }
 
 struct render_shared {
@@ -83,8 +89,8 @@ static void render_block(const struct render_job *job, struct image *img, long b
 	}
 	camera_span_init(&span, job->camera, tx0, tx1);
 	for (y = ty0; y < ty1; y++) {
-		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
 		struct ray rays[RENDER_BLOCK];
+		uint8_t bytes[RENDER_BLOCK * 3];
 
 		/* The row's rays all at once: their square roots and divisions
 		 * run side by side, and beside the first traces. */
@@ -94,8 +100,14 @@ static void render_block(const struct render_job *job, struct image *img, long b
 
 			counts->primary++;
 			c = render_trace(job->scene, &job->settings, &rays[x - tx0], 1, counts);
-			render_color_to_rgb8(c, row + (size_t)(x - job->x0) * 3);
+			render_rgb8(c, bytes + (x - tx0) * 3);
 		}
+		/* The row's 48 bytes go out at once: a block's row shares cache
+		 * lines with its neighbours', which another thread is likely
+		 * writing at the same time, pixel by pixel. */
+		memcpy(img->pixels + ((size_t)(y - job->y0) * (size_t)img->width +
+				      (size_t)(tx0 - job->x0)) * 3,
+		       bytes, (size_t)(tx1 - tx0) * 3);
 	}
 }
 
