@@ -120,8 +120,11 @@ static int render_one(const struct options *o, const struct scene *s, const stru
 	    (rc = image_alloc(&img, job.x1 - job.x0, job.y1 - job.y0, d)) < 0)
 		return rc;
 	/* A whole PNG is compressed band by band by the render's threads as
-	 * it is rendered: the write is then only the file. */
-	if (!o->region && o->format == RT_FORMAT_PNG) {
+	 * it is rendered, when they take every processor: the write is then
+	 * only the file.  With processors to spare, the write compresses on
+	 * all of them after the render, sooner than fewer threads would
+	 * during it. */
+	if (!o->region && o->format == RT_FORMAT_PNG && o->threads >= cli_default_threads()) {
 		if ((rc = image_png_writer_open(&img, job.threads, &png, d)) < 0)
 			goto out_free;
 		job.band_rows = image_png_writer_band_rows();
