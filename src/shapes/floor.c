@@ -69,9 +69,13 @@ static struct color floor_cell_color(double i, double j)
 	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
 	 * NaN, as there), without the library call. */
 	double half = 0.5 * fabs(i + j);
-	bool even = half == floor(half) && half != INFINITY;
+	/* The colour from the test's value, not from a branch on it: the
+	 * test waits on two divisions, and a branch that cells make
+	 * unpredictable (near the horizon they change every few pixels)
+	 * would throw away the shading done meanwhile. */
+	double white = (double)((half == floor(half)) & (half != INFINITY));
 
-	return even ? color_make(1.0, 1.0, 1.0) : color_make(0.0, 0.0, 0.0);
+	return color_make(white, white, white);
 }
 
 /* The texel over the point (u, v) of a cell, both in [0, 1) from the
