@@ -66,22 +66,22 @@ static struct vec3 floor_normal(const struct shape *s, struct vec3 p)
  * j are whole numbers, floor's). */
 static struct color floor_cell_color(double i, double j)
 {
-	/* i + j is even when half of it is a whole number: the same test as
-	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
-	 * NaN, as there), without the library call. */
-	double sum = i + j, half, white;
+	double sum = i + j, white;
 
 	/* The colour from the test's value, not from a branch on it: the
 	 * test waits on two divisions, and a branch that cells make
 	 * unpredictable (near the horizon they change every few pixels)
 	 * would throw away the shading done meanwhile.  A sum of whole
-	 * numbers is whole, so below 2^31 its low bit is the parity (the
-	 * same answer, sooner). */
-	if (fabs(sum) < 2147483648.0)
-		return color_make((double)(~(int)sum & 1), (double)(~(int)sum & 1),
-				  (double)(~(int)sum & 1));
-	half = 0.5 * fabs(sum);
-	white = (double)((half == floor(half)) & (half != INFINITY));
+	 * numbers is whole, so below 2^31 its low bit is the parity.  Beyond,
+	 * i + j is even when half of it is a whole number: the same test as
+	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
+	 * NaN, as there), without the library call. */
+	if (fabs(sum) < 2147483648.0) {
+		white = (double)(~(int)sum & 1);
+	} else {
+		double half = 0.5 * fabs(sum);
+		white = (double)((half == floor(half)) & (half != INFINITY));
+	}
 	return color_make(white, white, white);
 }
 
