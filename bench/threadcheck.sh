@@ -3,8 +3,10 @@
 # 1, 2, 3 and 7 threads and compares the files byte for byte.  The 12,000
 # object scene is big enough for the hierarchy's build to split its work
 # between threads too; helgrind (when valgrind is installed) then looks
-# for data races in the build, the parse's hashing thread and the render.
-# Every size leaves partial 16x16 blocks at the right and bottom edges
+# for data races in the build, the parse's hashing thread and the render,
+# and in a PNG compressed by the render's threads.  The PNG files of 1, 2,
+# 3 and 7 threads are compared too (compressed during the render or after
+# it).  Every size leaves partial 16x16 blocks at the right and bottom edges
 # (203 = 12 x 16 + 11).  Since images that agree with each other can all
 # be wrong alike, the 203-pixel render is also checked against what does
 # not share the block loop: the independent Python renderer
@@ -36,6 +38,20 @@ for case in "scenes/scene.txt -s 203" "scenes/scene.txt -s 97" "$T/gen.txt -s 61
 			fi
 		fi
 	done
+done
+# The PNG file too: with as many threads as processors or more, the
+# render's threads compress its strips as they are rendered; with fewer,
+# the write compresses them after the render.  The bytes are the same.
+for j in 1 2 3 7; do
+	"$W" -q -j $j -s 203 -o "$T/p$j.png" scenes/scene.txt || echo "threadcheck: PNG -j $j failed"
+	if [ $j -ne 1 ]; then
+		if cmp -s "$T/p1.png" "$T/p$j.png"; then
+			pass=$((pass + 1))
+		else
+			echo "threadcheck: the PNG of -j $j differs from -j 1's"
+			fail=$((fail + 1))
+		fi
+	fi
 done
 # The 203-pixel course scene with 1 and 7 threads against the reference
 # renderer, and against the merge of nine regions whose edges (5, 101 and
@@ -87,6 +103,15 @@ if command -v valgrind >/dev/null 2>&1; then
 			fail=$((fail + 1))
 		fi
 	done
+	# The PNG compressed during the render, three strips on three threads.
+	if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j 3 -s 130 -o "$T/vg.png" \
+		scenes/scene.txt 2>"$T/vg.err"; then
+		pass=$((pass + 1))
+	else
+		echo "threadcheck: valgrind --tool=helgrind reports on the PNG:"
+		cat "$T/vg.err"
+		fail=$((fail + 1))
+	fi
 else
 	echo "threadcheck: helgrind and memcheck NOT RUN (valgrind is not installed)"
 fi

@@ -64,6 +64,26 @@ typedef int image_fill_fn(void *ctx, FILE *f, struct diag *d);
 int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
 		     const volatile sig_atomic_t *cancel, struct diag *d);
 
+/* A PNG whose image data is compressed while the image is being made:
+ * the rows are cut into bands of image_png_writer_band_rows() rows from
+ * the top, and a thread that has made a band's rows final (the render's:
+ * render_job.band_done) calls image_png_writer_band_done(w, band, thread)
+ * with a thread number in [0, threads), once per band, never twice at
+ * once with the same number; the band is then compressed on that thread
+ * as soon as the band above it is final too.  image_png_writer_write,
+ * once no thread calls any more, compresses whatever is left and writes
+ * the file as image_write does: the very same bytes.  img stays in place,
+ * its bands told unchanged, until image_png_writer_free. */
+struct image_png_writer;
+
+int image_png_writer_open(const struct image *img, int threads, struct image_png_writer **out,
+			  struct diag *d);
+int image_png_writer_band_rows(void);
+void image_png_writer_band_done(void *w, int band, int thread);
+int image_png_writer_write(struct image_png_writer *w, const char *path,
+			   const volatile sig_atomic_t *cancel, struct diag *d);
+void image_png_writer_free(struct image_png_writer *w);
+
 /* True when image_write writes path in place rather than through a
  * temporary file: an existing non-regular file (a pipe, a device) or a path
  * under /dev/ or /proc/ (/dev/stdout, /dev/fd/N, /proc/self/fd/N). */

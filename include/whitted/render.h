@@ -58,6 +58,18 @@ struct render_job {
 	 * course's); N > 1 traces the N x N grid of the pixel's sub-pixel
 	 * centres and averages them (render/samples.c). */
 	int samples;
+	/* Told when rows are final: the rectangle's rows, cut into bands of
+	 * band_rows rows from its top (the last band may be shorter); when
+	 * the last block that covers part of band k is rendered, the thread
+	 * that rendered it calls band_done(band_ctx, k, thread), thread in
+	 * [0, threads).  Each band is told once (not at all when the render
+	 * is cancelled first), calls for different bands may come at the
+	 * same time, a thread's own calls one after the other.  No calls
+	 * when band_done is NULL or band_rows < 1 (image_png_writer_band_done
+	 * compresses a PNG's rows this way). */
+	int band_rows;
+	void (*band_done)(void *ctx, int band, int thread);
+	void *band_ctx;
 };
 
 /* A job for the whole image that cam sees (cam->size squared): the scene's

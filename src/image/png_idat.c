@@ -7,9 +7,13 @@
  * the raw deflate streams of the strips, one after the other, are one
  * valid stream; their Adler-32 checksums are combined into the stream's.
  * The strips are fixed by the image's height alone, so the file is the
- * same byte for byte whatever the number of threads.  At 1536x1536 this
- * takes a quarter of the time of libpng's fastest setting (no filter, zlib
- * level 3, one thread) for a file about as small.  libpng then writes the
+ * same byte for byte whatever the number of threads, and whichever thread
+ * compresses a strip: a renderer may hand each strip over as soon as its
+ * rows are final (png_idat_strips_band_done, from its own threads), so
+ * that the compression runs beside the render; the strips left over are
+ * compressed when the file is written.  At 1536x1536 this takes a quarter
+ * of the time of libpng's fastest setting (no filter, zlib level 3, one
+ * thread) for a file about as small.  libpng then writes the
  * chunks; its errors come back through a setjmp confined to
  * png_idat_guard, as in dist/tile_png.c. */
 #define _POSIX_C_SOURCE 200809L
@@ -17,6 +21,7 @@
 #include <pthread.h>
 #include <setjmp.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <string.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -24,7 +29,6 @@
 #include "base/alloc.h"
 #include "image/png_idat.h"
 
-#define PNG_IDAT_STRIP_ROWS 64
 #define PNG_IDAT_MAX_THREADS 8
 /* libpng's own IDAT size for the simplified writer. */
 #define PNG_IDAT_CHUNK 8192
@@ -34,18 +38,29 @@ struct png_idat_strip {
 	size_t cap, len;
 	uLong adler;
 	int status;		/* 0, or RT_E_NOMEM when zlib had no memory */
+	bool done;		/* compressed, well or not (status says) */
+	int bands_final;	/* how many of the bands it needs are final */
 };
 
-struct png_idat_job {
+/* One thread's compressor, kept from strip to strip: the deflate state is
+ * reset rather than made anew (deflateInit2 itself ends in deflateReset,
+ * so the stream is the same; the ~270 KiB of state are not allocated,
+ * faulted in and freed again for every strip), and the buffer of one
+ * strip's filtered rows. */
+struct png_idat_coder {
+	z_stream z;
+	bool z_ready;
+	unsigned char *filtered;
+};
+
+struct png_idat_strips {
 	const struct image *img;
 	struct png_idat_strip *strips;
-	int n_strips, n_threads;
-};
-
-struct png_idat_worker {
-	struct png_idat_job *job;
-	int first;		/* strips first, first + n_threads, ... */
-	unsigned char *filtered;	/* one strip's rows, filtered */
+	int n_strips;
+	struct png_idat_coder *coders;
+	int n_coders;
+	pthread_mutex_t lock;	/* over the strips' bands_final */
+	int next;		/* atomic: the next strip a finishing thread looks at */
 };
 
 static voidpf png_idat_zalloc(voidpf opaque, uInt items, uInt size)
@@ -61,14 +76,20 @@ static void png_idat_zfree(voidpf opaque, voidpf p)
 }
 
 /* Rows [y0, y1) with the Up filter: filtered[x] = row[x] - above[x]
- * (mod 256), the row above the image's first being zero. */
+ * (mod 256), the row above the image's first being zero.  Eight bytes at
+ * a time in a 64-bit word: (a | H) - (b & ~H) subtracts the low seven
+ * bits of each byte with no borrow into the next byte (each byte of it is
+ * 128 + a7 - b7, in [1, 255]), and the top bit of the byte's difference
+ * is then that bit flipped when a's and b's top bits are equal. */
 static void png_idat_filter(const struct image *img, unsigned char *filtered, int y0, int y1)
 {
+	const uint64_t high = 0x8080808080808080u;
 	size_t stride = (size_t)img->width * 3, x;
 	int y;
 
 	for (y = y0; y < y1; y++) {
 		const unsigned char *row = img->pixels + (size_t)y * stride;
+		const unsigned char *above = row - stride;
 		unsigned char *o = filtered + (size_t)(y - y0) * (stride + 1);
 
 		o[0] = 2;
@@ -76,50 +97,161 @@ static void png_idat_filter(const struct image *img, unsigned char *filtered, in
 			memcpy(o + 1, row, stride);
 			continue;
 		}
-		for (x = 0; x < stride; x++)
-			o[1 + x] = (unsigned char)(row[x] - row[x - stride]);
+		for (x = 0; x + 8 <= stride; x += 8) {
+			uint64_t a, b, diff;
+
+			memcpy(&a, row + x, 8);
+			memcpy(&b, above + x, 8);
+			diff = ((a | high) - (b & ~high)) ^ ((a ^ ~b) & high);
+			memcpy(o + 1 + x, &diff, 8);
+		}
+		for (; x < stride; x++)
+			o[1 + x] = (unsigned char)(row[x] - above[x]);
 	}
 }
 
-static void png_idat_strip_run(struct png_idat_job *job, int s, unsigned char *in)
+/* The coder ready for a strip of `bytes` filtered bytes. */
+static int png_idat_coder_ready(struct png_idat_coder *c, size_t bytes)
 {
-	struct png_idat_strip *st = &job->strips[s];
-	size_t line = (size_t)job->img->width * 3 + 1;
+	if (!c->filtered && !(c->filtered = rt_malloc(bytes)))
+		return RT_E_NOMEM;
+	if (c->z_ready)
+		return deflateReset(&c->z) == Z_OK ? 0 : RT_E_NOMEM;
+	memset(&c->z, 0, sizeof(c->z));
+	c->z.zalloc = png_idat_zalloc;
+	c->z.zfree = png_idat_zfree;
+	if (deflateInit2(&c->z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+		return RT_E_NOMEM;
+	c->z_ready = true;
+	return 0;
+}
+
+static void png_idat_coder_free(struct png_idat_coder *c)
+{
+	if (c->z_ready)
+		deflateEnd(&c->z);
+	c->z_ready = false;
+	rt_free(c->filtered);
+	c->filtered = NULL;
+}
+
+static void png_idat_strip_run(struct png_idat_strips *st, int s, struct png_idat_coder *c)
+{
+	struct png_idat_strip *strip = &st->strips[s];
+	size_t line = (size_t)st->img->width * 3 + 1;
 	int y0 = s * PNG_IDAT_STRIP_ROWS, y1 = y0 + PNG_IDAT_STRIP_ROWS;
-	z_stream z;
+	size_t bytes;
 	int rc;
 
-	if (y1 > job->img->height)
-		y1 = job->img->height;
-	png_idat_filter(job->img, in, y0, y1);
-	st->adler = adler32(adler32(0, Z_NULL, 0), in, (uInt)((size_t)(y1 - y0) * line));
-	memset(&z, 0, sizeof(z));
-	z.zalloc = png_idat_zalloc;
-	z.zfree = png_idat_zfree;
-	if (deflateInit2(&z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
-		st->status = RT_E_NOMEM;
+	if (y1 > st->img->height)
+		y1 = st->img->height;
+	bytes = (size_t)(y1 - y0) * line;
+	strip->done = true;
+	if (png_idat_coder_ready(c, line * PNG_IDAT_STRIP_ROWS) != 0) {
+		strip->status = RT_E_NOMEM;
 		return;
 	}
-	z.next_in = in;
-	z.avail_in = (uInt)((size_t)(y1 - y0) * line);
-	z.next_out = st->out;
-	z.avail_out = (uInt)st->cap;
-	rc = deflate(&z, s == job->n_strips - 1 ? Z_FINISH : Z_SYNC_FLUSH);
+	png_idat_filter(st->img, c->filtered, y0, y1);
+	strip->adler = adler32(adler32(0, Z_NULL, 0), c->filtered, (uInt)bytes);
+	c->z.next_in = c->filtered;
+	c->z.avail_in = (uInt)bytes;
+	c->z.next_out = strip->out;
+	c->z.avail_out = (uInt)strip->cap;
+	rc = deflate(&c->z, s == st->n_strips - 1 ? Z_FINISH : Z_SYNC_FLUSH);
 	/* The buffer holds deflateBound's worst case and more, so one call
 	 * always finishes. */
-	st->status = (rc == Z_STREAM_END || (rc == Z_OK && z.avail_in == 0 && z.avail_out > 0))
-			     ? 0 : RT_E_NOMEM;
-	st->len = st->cap - z.avail_out;
-	deflateEnd(&z);
+	strip->status = (rc == Z_STREAM_END || (rc == Z_OK && c->z.avail_in == 0 && c->z.avail_out > 0))
+				? 0 : RT_E_NOMEM;
+	strip->len = strip->cap - c->z.avail_out;
 }
 
+void png_idat_strips_free(struct png_idat_strips *st)
+{
+	int i;
+
+	if (!st)
+		return;
+	pthread_mutex_destroy(&st->lock);
+	for (i = 0; st->coders && i < st->n_coders; i++)
+		png_idat_coder_free(&st->coders[i]);
+	for (i = 0; st->strips && i < st->n_strips; i++)
+		rt_free(st->strips[i].out);
+	rt_free(st->coders);
+	rt_free(st->strips);
+	rt_free(st);
+}
+
+int png_idat_strips_open(const struct image *img, int threads, struct png_idat_strips **out,
+			 struct diag *d)
+{
+	size_t line = (size_t)img->width * 3 + 1;
+	struct png_idat_strips *st;
+	int s;
+
+	*out = NULL;
+	st = rt_calloc(1, sizeof(*st));
+	if (!st)
+		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
+	pthread_mutex_init(&st->lock, NULL);
+	st->img = img;
+	st->n_strips = (img->height + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS;
+	/* The compression after the fact (png_idat_strips_finish) uses up to
+	 * PNG_IDAT_MAX_THREADS of them. */
+	st->n_coders = threads > PNG_IDAT_MAX_THREADS ? threads : PNG_IDAT_MAX_THREADS;
+	st->strips = rt_calloc((size_t)st->n_strips, sizeof(*st->strips));
+	st->coders = rt_calloc((size_t)st->n_coders, sizeof(*st->coders));
+	if (!st->strips || !st->coders)
+		goto out_nomem;
+	for (s = 0; s < st->n_strips; s++) {
+		/* compressBound covers a zlib stream of the strip; the sync
+		 * flush's empty stored block needs 5 bytes more. */
+		st->strips[s].cap = compressBound((uLong)(line * PNG_IDAT_STRIP_ROWS)) + 16;
+		st->strips[s].out = rt_malloc(st->strips[s].cap);
+		if (!st->strips[s].out)
+			goto out_nomem;
+	}
+	*out = st;
+	return 0;
+out_nomem:
+	png_idat_strips_free(st);
+	return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
+}
+
+/* Strip s needs its own rows and the row above them (the Up filter's):
+ * band s, and band s - 1 unless it is the first.  Whoever makes the last
+ * of them final compresses it, outside the lock; the lock (once a band)
+ * makes every row's pixels visible to that thread. */
+void png_idat_strips_band_done(struct png_idat_strips *st, int band, int thread)
+{
+	bool ready[2] = { false, false };
+	int s;
+
+	if (thread < 0 || thread >= st->n_coders || band < 0 || band >= st->n_strips)
+		return;
+	pthread_mutex_lock(&st->lock);
+	for (s = band; s <= band + 1 && s < st->n_strips; s++)
+		ready[s - band] = ++st->strips[s].bands_final == (s == 0 ? 1 : 2);
+	pthread_mutex_unlock(&st->lock);
+	for (s = band; s <= band + 1 && s < st->n_strips; s++)
+		if (ready[s - band])
+			png_idat_strip_run(st, s, &st->coders[thread]);
+}
+
+struct png_idat_worker {
+	struct png_idat_strips *st;
+	struct png_idat_coder *coder;
+	pthread_t tid;
+};
+
+/* The strips not yet done, one at a time, until none are left. */
 static void *png_idat_worker_main(void *arg)
 {
 	struct png_idat_worker *w = arg;
 	int s;
 
-	for (s = w->first; s < w->job->n_strips; s += w->job->n_threads)
-		png_idat_strip_run(w->job, s, w->filtered);
+	while ((s = __atomic_fetch_add(&w->st->next, 1, __ATOMIC_RELAXED)) < w->st->n_strips)
+		if (!w->st->strips[s].done)
+			png_idat_strip_run(w->st, s, w->coder);
 	return NULL;
 }
 
@@ -131,75 +263,59 @@ static int png_idat_thread_count(int n_strips)
 	return n < n_strips ? n : n_strips;
 }
 
-/* Compresses every strip, on threads where they can be had (a thread that
- * cannot be started, or has no buffer, leaves its strips to the calling
- * thread). */
-static int png_idat_run_strips(struct png_idat_job *job)
+/* Compresses the strips no band_done call compressed, on threads where
+ * they can be had (the calling thread takes whatever the others leave,
+ * all of it when none can be started). */
+static void png_idat_run_rest(struct png_idat_strips *st)
 {
 	struct png_idat_worker workers[PNG_IDAT_MAX_THREADS];
-	pthread_t tids[PNG_IDAT_MAX_THREADS];
 	bool started[PNG_IDAT_MAX_THREADS];
-	size_t bytes = ((size_t)job->img->width * 3 + 1) * PNG_IDAT_STRIP_ROWS;
-	int t;
+	int t, n = 0, s;
 
-	for (t = 0; t < job->n_threads; t++) {
-		workers[t].job = job;
-		workers[t].first = t;
-		workers[t].filtered = t == 0 ? rt_malloc(bytes) : NULL;
-		started[t] = false;
+	for (s = 0; s < st->n_strips; s++)
+		n += !st->strips[s].done;
+	if (n == 0)
+		return;
+	n = png_idat_thread_count(n);
+	st->next = 0;
+	for (t = 0; t < n; t++) {
+		workers[t].st = st;
+		workers[t].coder = &st->coders[t];
+		started[t] = t > 0 && pthread_create(&workers[t].tid, NULL, png_idat_worker_main,
+						     &workers[t]) == 0;
 	}
-	if (!workers[0].filtered)
-		return RT_E_NOMEM;
-	for (t = 1; t < job->n_threads; t++) {
-		workers[t].filtered = rt_malloc(bytes);
-		started[t] = workers[t].filtered &&
-			     pthread_create(&tids[t], NULL, png_idat_worker_main, &workers[t]) == 0;
-	}
-	for (t = 0; t < job->n_threads; t++) {
+	png_idat_worker_main(&workers[0]);
+	for (t = 1; t < n; t++)
 		if (started[t])
-			continue;
-		if (t > 0) {
-			rt_free(workers[t].filtered);
-			workers[t].filtered = workers[0].filtered;
-		}
-		png_idat_worker_main(&workers[t]);
-	}
-	for (t = 1; t < job->n_threads; t++) {
-		if (started[t]) {
-			pthread_join(tids[t], NULL);
-			rt_free(workers[t].filtered);
-		}
-	}
-	rt_free(workers[0].filtered);
-	return 0;
+			pthread_join(workers[t].tid, NULL);
 }
 
 /* The zlib stream: header (deflate, 32 KiB window, fastest), the strips,
  * the Adler-32 of all rows, big-endian. */
-static int png_idat_join(const struct png_idat_job *job, struct png_idat *out, struct diag *d)
+static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
 {
-	size_t total = 2 + 4, pos = 2, line = (size_t)job->img->width * 3 + 1;
+	size_t total = 2 + 4, pos = 2, line = (size_t)st->img->width * 3 + 1;
 	uLong adler = adler32(0, Z_NULL, 0);
 	int s;
 
-	for (s = 0; s < job->n_strips; s++) {
-		if (job->strips[s].status != 0)
+	for (s = 0; s < st->n_strips; s++) {
+		if (st->strips[s].status != 0)
 			return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-		total += job->strips[s].len;
+		total += st->strips[s].len;
 	}
 	out->data = rt_malloc(total);
 	if (!out->data)
 		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
 	out->data[0] = 0x78;
 	out->data[1] = 0x01;
-	for (s = 0; s < job->n_strips; s++) {
-		int rows = job->img->height - s * PNG_IDAT_STRIP_ROWS;
+	for (s = 0; s < st->n_strips; s++) {
+		int rows = st->img->height - s * PNG_IDAT_STRIP_ROWS;
 
 		if (rows > PNG_IDAT_STRIP_ROWS)
 			rows = PNG_IDAT_STRIP_ROWS;
-		memcpy(out->data + pos, job->strips[s].out, job->strips[s].len);
-		pos += job->strips[s].len;
-		adler = adler32_combine(adler, job->strips[s].adler, (z_off_t)((size_t)rows * line));
+		memcpy(out->data + pos, st->strips[s].out, st->strips[s].len);
+		pos += st->strips[s].len;
+		adler = adler32_combine(adler, st->strips[s].adler, (z_off_t)((size_t)rows * line));
 	}
 	out->data[pos++] = (unsigned char)(adler >> 24);
 	out->data[pos++] = (unsigned char)(adler >> 16);
@@ -209,43 +325,25 @@ static int png_idat_join(const struct png_idat_job *job, struct png_idat *out, s
 	return 0;
 }
 
+int png_idat_strips_finish(struct png_idat_strips *st, struct png_idat *out, struct diag *d)
+{
+	out->data = NULL;
+	out->len = 0;
+	png_idat_run_rest(st);
+	return png_idat_join(st, out, d);
+}
+
 int png_idat_compress(const struct image *img, struct png_idat *out, struct diag *d)
 {
-	struct png_idat_job job;
-	size_t line = (size_t)img->width * 3 + 1;
-	int s, rc = 0;
+	struct png_idat_strips *st;
+	int rc;
 
 	out->data = NULL;
 	out->len = 0;
-	memset(&job, 0, sizeof(job));
-	job.img = img;
-	job.n_strips = (img->height + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS;
-	job.n_threads = png_idat_thread_count(job.n_strips);
-	job.strips = rt_calloc((size_t)job.n_strips, sizeof(*job.strips));
-	if (!job.strips) {
-		rc = diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-		goto out_free;
-	}
-	for (s = 0; s < job.n_strips; s++) {
-		/* compressBound covers a zlib stream of the strip; the sync
-		 * flush's empty stored block needs 5 bytes more. */
-		job.strips[s].cap = compressBound((uLong)(line * PNG_IDAT_STRIP_ROWS)) + 16;
-		job.strips[s].out = rt_malloc(job.strips[s].cap);
-		if (!job.strips[s].out) {
-			rc = diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-			goto out_free;
-		}
-	}
-	if (png_idat_run_strips(&job) != 0) {
-		rc = diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-		goto out_free;
-	}
-	rc = png_idat_join(&job, out, d);
-out_free:
-	if (job.strips)
-		for (s = 0; s < job.n_strips; s++)
-			rt_free(job.strips[s].out);
-	rt_free(job.strips);
+	if ((rc = png_idat_strips_open(img, 1, &st, d)) < 0)
+		return rc;
+	rc = png_idat_strips_finish(st, out, d);
+	png_idat_strips_free(st);
 	return rc;
 }
 
@@ -316,20 +414,15 @@ static bool png_idat_guard(struct png_idat_writer *w)
 	return true;
 }
 
-int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
-			struct diag *d)
+int png_idat_write_data(const struct image *img, const struct png_idat *z, FILE *f,
+			png_idat_extra_fn *extra, void *ctx, struct diag *d)
 {
 	struct png_idat_writer w;
-	struct png_idat z;
 	bool ok;
-	int rc;
 
-	rc = png_idat_compress(img, &z, d);
-	if (rc != 0)
-		return rc;
 	memset(&w, 0, sizeof(w));
 	w.img = img;
-	w.z = &z;
+	w.z = z;
 	w.f = f;
 	w.extra = extra;
 	w.ctx = ctx;
@@ -338,13 +431,11 @@ int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *ext
 		w.info = png_create_info_struct(w.png);
 	if (!w.info) {
 		png_destroy_write_struct(&w.png, NULL);
-		png_idat_free(&z);
 		return diag_fail(d, RT_E_NOMEM, "out of memory for a PNG");
 	}
 	errno = 0;
 	ok = png_idat_guard(&w);
 	png_destroy_write_struct(&w.png, &w.info);
-	png_idat_free(&z);
 	/* The caller flushes (image_write_file): a small file fails there. */
 	if (ok && !ferror(f))
 		return 0;
@@ -353,4 +444,18 @@ int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *ext
 	if (ferror(f) && errno != 0)
 		return diag_fail(d, RT_E_IO, "cannot write PNG: %s", strerror(errno));
 	return diag_fail(d, RT_E_IO, "cannot write PNG: %s", ok ? "write error" : w.msg);
+}
+
+int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
+			struct diag *d)
+{
+	struct png_idat z;
+	int rc;
+
+	rc = png_idat_compress(img, &z, d);
+	if (rc != 0)
+		return rc;
+	rc = png_idat_write_data(img, &z, f, extra, ctx, d);
+	png_idat_free(&z);
+	return rc;
 }

@@ -10,6 +10,9 @@
 #include "whitted/diag.h"
 #include "whitted/image.h"
 
+/* The rows of a strip, the unit compressed by one thread. */
+#define PNG_IDAT_STRIP_ROWS 64
+
 /* The zlib stream of img's filtered rows. */
 struct png_idat {
 	unsigned char *data;
@@ -19,12 +22,33 @@ struct png_idat {
 int png_idat_compress(const struct image *img, struct png_idat *out, struct diag *d);
 void png_idat_free(struct png_idat *z);
 
+/* The strips of img, compressed while it is still being made: after
+ * png_idat_strips_open, a thread in [0, threads) that has made the rows of
+ * band k (rows [k PNG_IDAT_STRIP_ROWS, (k + 1) PNG_IDAT_STRIP_ROWS), the
+ * last band shorter) final calls png_idat_strips_band_done(st, k, thread),
+ * once per band; no two calls with the same thread at once.  Calls for
+ * different bands may come from different threads at the same time.
+ * png_idat_strips_finish, once every thread is done, compresses what is
+ * left and joins the strips: the same stream as png_idat_compress's.  img
+ * must stay in place (its pixels may change only in bands not yet told)
+ * until png_idat_strips_free. */
+struct png_idat_strips;
+
+int png_idat_strips_open(const struct image *img, int threads, struct png_idat_strips **out,
+			 struct diag *d);
+void png_idat_strips_band_done(struct png_idat_strips *st, int band, int thread);
+int png_idat_strips_finish(struct png_idat_strips *st, struct png_idat *out, struct diag *d);
+void png_idat_strips_free(struct png_idat_strips *st);
+
 /* Called after png_set_IHDR and before png_write_info, to add chunks;
  * it runs inside the writer's error guard and may call libpng freely. */
 typedef void png_idat_extra_fn(png_structp png, png_infop info, void *ctx);
 
 /* Writes img as an 8-bit RGB PNG with an sRGB chunk to f: IHDR, sRGB,
- * whatever extra adds (may be NULL), the image data, IEND. */
+ * whatever extra adds (may be NULL), the image data z (img's), IEND. */
+int png_idat_write_data(const struct image *img, const struct png_idat *z, FILE *f,
+			png_idat_extra_fn *extra, void *ctx, struct diag *d);
+/* The same with img's image data compressed here. */
 int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
 			struct diag *d);
 

@@ -5,6 +5,7 @@
  * camera's rays keep every bit. */
 #include <math.h>
 
+#include "render/camera_span.h"
 #include "whitted/camera.h"
 
 void camera_params_default(struct camera_params *p)
@@ -86,6 +87,37 @@ struct ray camera_ray(const struct camera *c, int px, int py)
 		r.origin = vec3_add_scaled(r.origin, w, c->near);
 	r.dir = vec3_normalize(w);
 	return r;
+}
+
+void camera_span_init(struct camera_span *sp, const struct camera *c, int x0, int x1)
+{
+	int i;
+
+	sp->x0 = x0;
+	sp->n = x1 - x0;
+	for (i = 0; i < sp->n; i++) {
+		double u = (x0 + i + 0.5) * c->pixel_scale_x - c->half_width;
+		sp->right_u[i] = vec3_scale(c->right, u);
+	}
+}
+
+/* camera_ray's sums, w = forward + (right u + up v), with the two
+ * products taken from the span and the row. */
+void camera_span_rays(const struct camera_span *sp, const struct camera *c, int py,
+		      struct ray *out)
+{
+	double v = c->half_height - (py + 0.5) * c->pixel_scale;
+	struct vec3 up_v = vec3_scale(c->up, v);
+	int i;
+
+	for (i = 0; i < sp->n; i++) {
+		struct vec3 w = vec3_add(c->forward, vec3_add(sp->right_u[i], up_v));
+
+		out[i].origin = c->eye;
+		if (c->near > 0.0)
+			out[i].origin = vec3_add_scaled(out[i].origin, w, c->near);
+		out[i].dir = vec3_normalize(w);
+	}
 }
 
 struct ray camera_ray_at(const struct camera *c, double x, double y)

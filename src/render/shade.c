@@ -252,6 +252,6 @@ static struct color render_trace_in(const struct scene *s, const struct render_s
 	if (level < rs->recursion && m->kt > 0.0 && !tir)
 		c = color_add(c, render_transmit(s, rs, p, through, m->kt, eps, level, counts,
 							       &beyond));
-	return rs->clamp == RT_CLAMP_LEVEL ? color_clamp(c) : c;
+	return rs->clamp == RT_CLAMP_LEVEL ? render_clamp(c) : c;
 }
 

@@ -6,7 +6,11 @@
 
 #include <math.h>
 #include <stdbool.h>
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+#include <emmintrin.h>
+#endif
 
+#include "whitted/material.h"
 #include "whitted/render.h"
 #include "whitted/vec3.h"
 
@@ -30,6 +34,26 @@ static inline double render_offset(struct vec3 p)
 static inline double render_specular_power(double rl, double shininess)
 {
 	return shininess == 1.0 ? rl : pow(rl, shininess);
+}
+
+/* color_clamp01(v) without its two branches, which a picture's colours
+ * leave to chance: MAXSD(v, 0) is v > 0 ? v : 0 and MINSD(1, m) is
+ * 1 < m ? 1 : m, to the bit (the second operand wins ties and NaNs), so
+ * NaN and -0 become +0 as there.  The plain C twin is color_clamp01. */
+static inline double render_clamp01(double v)
+{
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+	__m128d m = _mm_max_sd(_mm_set_sd(v), _mm_setzero_pd());
+
+	return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(1.0), m));
+#else
+	return color_clamp01(v);
+#endif
+}
+
+static inline struct color render_clamp(struct color c)
+{
+	return color_make(render_clamp01(c.r), render_clamp01(c.g), render_clamp01(c.b));
 }
 
 /* The refracted direction of unit d through a surface of unit normal n

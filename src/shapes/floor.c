@@ -62,16 +62,27 @@ static struct vec3 floor_normal(const struct shape *s, struct vec3 p)
 	return vec3_make(0.0, 0.0, 1.0);
 }
 
-/* White when the cell indices' sum i + j is even, black otherwise. */
+/* White when the cell indices' sum i + j is even, black otherwise (i and
+ * j are whole numbers, floor's). */
 static struct color floor_cell_color(double i, double j)
 {
-	/* i + j is even when half of it is a whole number: the same test as
+	double sum = i + j, white;
+
+	/* The colour from the test's value, not from a branch on it: the
+	 * test waits on two divisions, and a branch that cells make
+	 * unpredictable (near the horizon they change every few pixels)
+	 * would throw away the shading done meanwhile.  A sum of whole
+	 * numbers is whole, so below 2^31 its low bit is the parity.  Beyond,
+	 * i + j is even when half of it is a whole number: the same test as
 	 * fmod(|i + j|, 2) == 0 for every finite value (and false for inf and
 	 * NaN, as there), without the library call. */
-	double half = 0.5 * fabs(i + j);
-	bool even = half == floor(half) && half != INFINITY;
-
-	return even ? color_make(1.0, 1.0, 1.0) : color_make(0.0, 0.0, 0.0);
+	if (fabs(sum) < 2147483648.0) {
+		white = (double)(~(int)sum & 1);
+	} else {
+		double half = 0.5 * fabs(sum);
+		white = (double)((half == floor(half)) & (half != INFINITY));
+	}
+	return color_make(white, white, white);
 }
 
 /* The texel over the point (u, v) of a cell, both in [0, 1) from the

@@ -2,9 +2,14 @@
  * decompresses the joined stream (checksum included) to the Up-filtered
  * rows of the image, for heights below, at and across the strip size;
  * libpng reads the whole file back to the same pixels; and each allocation
- * that fails is reported as out of memory without a leak. */
+ * that fails is reported as out of memory without a leak.  Strips handed
+ * over band by band (in any order, from several threads, some never) give
+ * the very same stream, and image_png_writer the very same file as
+ * image_write. */
 #define _POSIX_C_SOURCE 200809L
 #include <png.h>
+#include <pthread.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -130,11 +135,212 @@ static void test_png_idat_out_of_memory(void **state)
 	image_free(&img);
 }
 
+/* The bands of the image told in the order `order` (a permutation of
+ * some of them), by `threads` threads taking turns. */
+struct band_feed {
+	struct png_idat_strips *st;
+	const int *order;
+	int n, threads, thread;
+};
+
+static void *band_feed_main(void *arg)
+{
+	struct band_feed *f = arg;
+	int k;
+
+	for (k = f->thread; k < f->n; k += f->threads)
+		png_idat_strips_band_done(f->st, f->order[k], f->thread);
+	return NULL;
+}
+
+static void feed_bands(struct png_idat_strips *st, const int *order, int n, int threads)
+{
+	struct band_feed feeds[4];
+	pthread_t tids[4];
+	int t;
+
+	for (t = 0; t < threads; t++) {
+		feeds[t].st = st;
+		feeds[t].order = order;
+		feeds[t].n = n;
+		feeds[t].threads = threads;
+		feeds[t].thread = t;
+		assert_int_equal(pthread_create(&tids[t], NULL, band_feed_main, &feeds[t]), 0);
+	}
+	for (t = 0; t < threads; t++)
+		pthread_join(tids[t], NULL);
+}
+
+static void test_png_idat_bands_same_stream(void **state)
+{
+	static const int heights[] = { 1, 63, 64, 65, 200, 640 };
+	size_t i;
+
+	(void)state;
+	for (i = 0; i < sizeof(heights) / sizeof(heights[0]); i++) {
+		int n = (heights[i] + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS, k, round;
+		int order[16];
+		struct image img;
+		struct png_idat want;
+		struct diag d;
+
+		memset(&d, 0, sizeof(d));
+		assert_true(n <= 16);
+		assert_int_equal(image_alloc(&img, 41, heights[i], &d), 0);
+		fill_pixels(&img, (unsigned)i + 3);
+		assert_int_equal(png_idat_compress(&img, &want, &d), 0);
+		/* Round 0: top to bottom; 1: bottom to top; 2: shuffled; 3: every
+		 * other band only (the rest left to the finish); 4: none. */
+		for (round = 0; round < 5; round++) {
+			struct png_idat_strips *st;
+			struct png_idat got;
+			unsigned seed = 12345u + (unsigned)round;
+			int told = n;
+
+			for (k = 0; k < n; k++)
+				order[k] = round == 1 ? n - 1 - k : k;
+			if (round == 2) {
+				for (k = n - 1; k > 0; k--) {
+					int j, tmp;
+					seed = seed * 1103515245u + 12345u;
+					j = (int)((seed >> 16) % (unsigned)(k + 1));
+					tmp = order[k];
+					order[k] = order[j];
+					order[j] = tmp;
+				}
+			}
+			if (round == 3) {
+				for (k = 0; k < n; k += 2)
+					order[k / 2] = k;
+				told = (n + 1) / 2;
+			}
+			if (round == 4)
+				told = 0;
+			assert_int_equal(png_idat_strips_open(&img, 3, &st, &d), 0);
+			/* Threads outside [0, threads) are ignored. */
+			png_idat_strips_band_done(st, 0, 99);
+			png_idat_strips_band_done(st, 0, -1);
+			feed_bands(st, order, told, round == 0 ? 1 : 3);
+			assert_int_equal(png_idat_strips_finish(st, &got, &d), 0);
+			assert_int_equal(got.len, want.len);
+			assert_memory_equal(got.data, want.data, want.len);
+			png_idat_free(&got);
+			png_idat_strips_free(st);
+		}
+		png_idat_free(&want);
+		image_free(&img);
+	}
+}
+
+static unsigned char *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	unsigned char *buf;
+	long size;
+
+	assert_non_null(f);
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	size = ftell(f);
+	assert_true(size > 0);
+	rewind(f);
+	buf = malloc((size_t)size);
+	assert_non_null(buf);
+	assert_int_equal(fread(buf, 1, (size_t)size, f), (size_t)size);
+	fclose(f);
+	*len = (size_t)size;
+	return buf;
+}
+
+/* The public writer: the same file as image_write, told all bands, some
+ * or none. */
+static void test_png_writer_same_file(void **state)
+{
+	char dir[] = "/tmp/test_png_writer.XXXXXX", a[64], b[64];
+	struct image img;
+	struct diag d;
+	int told;
+
+	(void)state;
+	assert_non_null(mkdtemp(dir));
+	snprintf(a, sizeof(a), "%s/a.png", dir);
+	snprintf(b, sizeof(b), "%s/b.png", dir);
+	memset(&d, 0, sizeof(d));
+	assert_int_equal(image_alloc(&img, 30, 150, &d), 0);
+	fill_pixels(&img, 11);
+	assert_int_equal(image_write(&img, a, RT_FORMAT_PNG, NULL, &d), 0);
+	assert_int_equal(image_png_writer_band_rows(), PNG_IDAT_STRIP_ROWS);
+	for (told = 0; told <= 3; told++) {
+		struct image_png_writer *w;
+		unsigned char *fa, *fb;
+		size_t la, lb;
+		int k;
+
+		assert_int_equal(image_png_writer_open(&img, 1, &w, &d), 0);
+		for (k = 0; k < told; k++)
+			image_png_writer_band_done(w, k, 0);
+		assert_int_equal(image_png_writer_write(w, b, NULL, &d), 0);
+		image_png_writer_free(w);
+		fa = slurp(a, &la);
+		fb = slurp(b, &lb);
+		assert_int_equal(la, lb);
+		assert_memory_equal(fa, fb, la);
+		free(fa);
+		free(fb);
+	}
+	image_png_writer_free(NULL);
+	unlink(a);
+	unlink(b);
+	rmdir(dir);
+	image_free(&img);
+}
+
+/* Every allocation that fails, in the opening, in the strips compressed
+ * band by band or in the finish, is reported as out of memory without a
+ * leak (the sanitizer build finds those). */
+static void test_png_idat_bands_out_of_memory(void **state)
+{
+	struct image img;
+	struct png_idat z;
+	struct diag d;
+	unsigned long n;
+	int rc;
+
+	(void)state;
+	memset(&d, 0, sizeof(d));
+	assert_int_equal(image_alloc(&img, 20, 150, &d), 0);
+	fill_pixels(&img, 5);
+	for (n = 1;; n++) {
+		struct png_idat_strips *st = NULL;
+
+		rt_alloc_fail_from(n);
+		rc = png_idat_strips_open(&img, 2, &st, &d);
+		if (rc == 0) {
+			png_idat_strips_band_done(st, 1, 1);
+			png_idat_strips_band_done(st, 0, 0);
+			rc = png_idat_strips_finish(st, &z, &d);
+			png_idat_strips_free(st);
+		} else {
+			assert_null(st);
+		}
+		rt_alloc_fail_from(0);
+		if (rc == 0)
+			break;
+		assert_int_equal(rc, -RT_E_NOMEM);
+	}
+	assert_true(n > 1);
+	check_stream(&img, &z);
+	png_idat_free(&z);
+	image_free(&img);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_png_idat_heights),
 		cmocka_unit_test(test_png_idat_out_of_memory),
+		cmocka_unit_test(test_png_idat_bands_same_stream),
+		cmocka_unit_test(test_png_writer_same_file),
+		cmocka_unit_test(test_png_idat_bands_out_of_memory),
 	};
 
 	return SUPPORT_RUN(tests, argc, argv);

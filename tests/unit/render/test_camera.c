@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "render/camera_span.h"
 #include "whitted/camera.h"
 #include "support.h"
 
@@ -354,6 +355,61 @@ static void test_camera_classic_unchanged(void **state)
 	}
 }
 
+/* A block's rays made from the shared products are camera_ray's to the
+ * bit, for views of every kind: default, turned and tilted, nearfar's
+ * image plane and wider horizontal view, spans of 1 to 16 columns
+ * anywhere in the image (its last columns too). */
+static void test_camera_span_is_camera_ray(void **state)
+{
+	static const struct {
+		struct vec3 eye, look, up;
+		double fov, near, aspect;
+		int size;
+	} views[] = {
+		{ { 0, -200, 10 }, { 0, 0, 0 }, { 0, 0, 1 }, 80, 0, 0, 99 },
+		{ { 31.5, -7.25, 80 }, { -3, 12, 1.5 }, { 0.2, 0.1, 1 }, 37.5, 0, 0, 1536 },
+		{ { 1e5, 2e5, -3e4 }, { 0, 0, 0 }, { 0, 0, -1 }, 120, 0, 0, 17 },
+		{ { 0, -50, 20 }, { 0, 0, 10 }, { 0, 0, 1 }, 60, 12.5, 1.5, 200 },
+		{ { -5, 5, 5 }, { 5, -5, 0 }, { 1, 1, 1 }, 10, 0.001, 0.3, 1 },
+	};
+	size_t k;
+
+	(void)state;
+	for (k = 0; k < sizeof(views) / sizeof(views[0]); k++) {
+		struct camera_params p;
+		struct camera c;
+		struct diag d;
+		int x0, n, py;
+
+		p.eye = views[k].eye;
+		p.look = views[k].look;
+		p.up = views[k].up;
+		p.fov_deg = views[k].fov;
+		p.near = views[k].near;
+		p.aspect = views[k].aspect;
+		assert_int_equal(camera_init(&c, &p, views[k].size, &d), 0);
+		for (x0 = 0; x0 < c.size; x0 += 1 + c.size / 7) {
+			for (n = 1; n <= CAMERA_SPAN_MAX && x0 + n <= c.size; n += 5) {
+				struct camera_span sp;
+				struct ray rays[CAMERA_SPAN_MAX];
+				int i;
+
+				camera_span_init(&sp, &c, x0, x0 + n);
+				for (py = 0; py < c.size; py += 1 + c.size / 5) {
+					camera_span_rays(&sp, &c, py, rays);
+					for (i = 0; i < n; i++) {
+						struct ray want = camera_ray(&c, x0 + i, py);
+						assert_memory_equal(&rays[i].origin, &want.origin,
+								    sizeof(want.origin));
+						assert_memory_equal(&rays[i].dir, &want.dir,
+								    sizeof(want.dir));
+					}
+				}
+			}
+		}
+	}
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -369,6 +425,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_camera_nearfar_rays_by_hand),
 		cmocka_unit_test(test_camera_nearfar_plane),
 		cmocka_unit_test(test_camera_classic_unchanged),
+		cmocka_unit_test(test_camera_span_is_camera_ray),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }

@@ -643,6 +643,11 @@ static void test_render_color_to_rgb8(void **state)
 		{ 0.002, 1 },		/* 0.51 */
 		{ 0.998, 254 },		/* 254.49 */
 		{ 0.999, 255 },		/* 254.745 */
+		{ NAN, 0 }, { -0.0, 0 }, { INFINITY, 255 }, { -INFINITY, 0 },
+		{ 1e-300, 0 }, { 4.9e-324, 0 }, { -4.9e-324, 0 },
+		{ 0x1.0000000000001p0, 255 }, { 0x1.fffffffffffffp-1, 255 },
+		{ 127.5 / 255.0, 128 },
+		{ 0x1.fffffffffffffp-2, 127 },	/* just below 1/2: 127.49999... */
 	};
 	size_t i;
 
@@ -757,6 +762,91 @@ static void test_render_region_matches_full_image(void **state)
 		image_free(&part);
 	}
 	image_free(&full);
+	scene_destroy(s);
+}
+
+/* What band_done saw: each band's rows as they were when it was told. */
+struct band_log {
+	const struct image *img;
+	int band_rows, threads;
+	int calls[128];
+	uint8_t *seen;			/* a copy of the image, band by band */
+	int bad_thread;
+};
+
+static void band_log_done(void *ctx, int band, int thread)
+{
+	struct band_log *log = ctx;
+	size_t stride = (size_t)log->img->width * 3;
+	int y0 = band * log->band_rows, y1 = y0 + log->band_rows;
+
+	if (y1 > log->img->height)
+		y1 = log->img->height;
+	if (thread < 0 || thread >= log->threads)
+		__atomic_store_n(&log->bad_thread, 1, __ATOMIC_RELAXED);
+	__atomic_add_fetch(&log->calls[band], 1, __ATOMIC_RELAXED);
+	memcpy(log->seen + (size_t)y0 * stride, log->img->pixels + (size_t)y0 * stride,
+	       (size_t)(y1 - y0) * stride);
+}
+
+/* Every band is told once, by a thread of the job, when its rows are
+ * final (the copy taken then is the finished image), for bands of any
+ * height against the 16-row blocks, any number of threads, and regions;
+ * the image is the one rendered without bands. */
+static void test_render_bands_told_when_final(void **state)
+{
+	static const int band_rows[] = { 1, 10, 16, 64, 1000 };
+	static const int threads[] = { 1, 2, 3, 7 };
+	static const int regions[][4] = { { 0, 0, 99, 99 }, { 5, 17, 90, 80 }, { 40, 3, 41, 99 } };
+	struct scene *s = prepared(course_scene, true);
+	struct camera_params cp;
+	struct camera cam;
+	struct diag d;
+	size_t r, b, t;
+
+	(void)state;
+	camera_params_default(&cp);
+	assert_int_equal(camera_init(&cam, &cp, 99, &d), 0);
+	for (r = 0; r < sizeof(regions) / sizeof(regions[0]); r++) {
+		const int *g = regions[r];
+		struct image plain;
+
+		render_region(s, &cam, 1, g[0], g[1], g[2], g[3], &plain, NULL);
+		for (b = 0; b < sizeof(band_rows) / sizeof(band_rows[0]); b++) {
+			for (t = 0; t < sizeof(threads) / sizeof(threads[0]); t++) {
+				size_t bytes = (size_t)plain.width * (size_t)plain.height * 3;
+				int n_bands = (plain.height + band_rows[b] - 1) / band_rows[b], k;
+				struct render_job job;
+				struct band_log log;
+				struct image img;
+
+				memset(&log, 0, sizeof(log));
+				log.img = &img;
+				log.band_rows = band_rows[b];
+				log.threads = threads[t];
+				log.seen = calloc(1, bytes);
+				assert_non_null(log.seen);
+				render_job_init(&job, s, &cam, threads[t]);
+				job.x0 = g[0];
+				job.y0 = g[1];
+				job.x1 = g[2];
+				job.y1 = g[3];
+				job.band_rows = band_rows[b];
+				job.band_done = band_log_done;
+				job.band_ctx = &log;
+				assert_int_equal(image_alloc(&img, g[2] - g[0], g[3] - g[1], &d), 0);
+				assert_int_equal(render_image(&job, &img, NULL, &d), 0);
+				assert_memory_equal(img.pixels, plain.pixels, bytes);
+				assert_memory_equal(log.seen, plain.pixels, bytes);
+				assert_int_equal(log.bad_thread, 0);
+				for (k = 0; k < 128; k++)
+					assert_int_equal(log.calls[k], k < n_bands ? 1 : 0);
+				free(log.seen);
+				image_free(&img);
+			}
+		}
+		image_free(&plain);
+	}
 	scene_destroy(s);
 }
 
@@ -1110,6 +1200,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_render_ray_counts),
 		cmocka_unit_test(test_render_threads_bit_identical),
 		cmocka_unit_test(test_render_region_matches_full_image),
+		cmocka_unit_test(test_render_bands_told_when_final),
 		cmocka_unit_test(test_render_pixel_matches_trace),
 		cmocka_unit_test(test_render_errors_and_cancel),
 		cmocka_unit_test(test_render_spot_cone_hard_edge),

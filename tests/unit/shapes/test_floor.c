@@ -1,8 +1,8 @@
 /* The implicit checkerboard floor: the plane z = 0 over [-W/2, W/2)^2,
  * tile parity, normal, bounds and POV export; the material of
  * floor_create_view; and nearfar's infinite checkerboard, its own cells'
- * parity across negative coordinates, no extent, no bounds, and its POV
- * plane. */
+ * parity across negative coordinates and far out (past 2^31 and 2^53),
+ * no extent, no bounds, and its POV plane. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -306,6 +306,43 @@ static void test_floor_infinite_parity_negative(void **state)
 	shape_destroy(s);
 }
 
+/* The parity of cells whose index sum is near and past 2^31 (where the
+ * low bit of the sum as an int no longer serves) and near 2^53 (where
+ * every double is even), on cells of 1: white exactly when
+ * fmod(|i + j|, 2) == 0, the rule's own form. */
+static void test_floor_infinite_parity_far_out(void **state)
+{
+	static const double sums[] = { 2147483646.0, 2147483647.0, 2147483648.0, 2147483649.0,
+				       4294967297.0, 9007199254740991.0, 9007199254740992.0,
+				       1e300 };
+	struct shape *s = floor_create_view(INFINITY, 1.0, &nearfar_mat);
+	size_t k;
+	int d, sign;
+
+	(void)state;
+	assert_non_null(s);
+	for (k = 0; k < sizeof(sums) / sizeof(sums[0]); k++) {
+		for (sign = -1; sign <= 1; sign += 2) {
+			for (d = -2; d <= 2; d++) {
+				/* Cell (i, 3): x = i + 0.25 lies in cell i while i has
+				 * room for the quarter, else it is i itself. */
+				double i = sign * sums[k] + d - 3.0;
+				double x = fabs(i) < 1e15 ? i + 0.25 : i;
+				double ci = floor(x), sum = ci + 3.0;
+				bool want = fmod(fabs(sum), 2.0) == 0.0;
+
+				if (white_at(s, x, 3.5) != want) {
+					print_error("cell %.17g + 3: want %s\n", ci, want ? "white" : "black");
+					fail();
+				}
+			}
+		}
+	}
+	assert_false(white_at(s, NAN, 0));
+	assert_false(white_at(s, INFINITY, 0));
+	shape_destroy(s);
+}
+
 static void test_floor_infinite_everywhere(void **state)
 {
 	struct shape *s = floor_create_view(INFINITY, 50.0, &nearfar_mat);
@@ -400,6 +437,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test_setup_teardown(test_floor_export_pov, setup_floor, teardown_floor),
 		cmocka_unit_test(test_floor_view_finite_keeps_rule),
 		cmocka_unit_test(test_floor_infinite_parity_negative),
+		cmocka_unit_test(test_floor_infinite_parity_far_out),
 		cmocka_unit_test(test_floor_infinite_everywhere),
 		cmocka_unit_test(test_floor_infinite_export_pov),
 	};
