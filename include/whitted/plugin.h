@@ -34,6 +34,8 @@
  *
  * Threads: intersect (and normal, color_at) run on every render thread at
  * once, for every ray: they must allocate nothing and take no lock.
+ * bounds, too, runs on several threads at once (the hierarchy's build
+ * bounds a big scene's shapes in parallel), and must write nothing.
  * parse, too, may run on several threads at once, each with its own
  * struct parser (a big scene file is parsed in parts in parallel: see
  * src/scenefile/parse_parts.c), and so may host->alloc and host->free,

@@ -89,7 +89,7 @@ static void png_idat_filter(const struct image *img, unsigned char *filtered, in
 
 	for (y = y0; y < y1; y++) {
 		const unsigned char *row = img->pixels + (size_t)y * stride;
-		const unsigned char *above = row - stride;
+		const unsigned char *above;
 		unsigned char *o = filtered + (size_t)(y - y0) * (stride + 1);
 
 		o[0] = 2;
@@ -97,6 +97,7 @@ static void png_idat_filter(const struct image *img, unsigned char *filtered, in
 			memcpy(o + 1, row, stride);
 			continue;
 		}
+		above = row - stride;
 		for (x = 0; x + 8 <= stride; x += 8) {
 			uint64_t a, b, diff;
 

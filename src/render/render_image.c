@@ -141,9 +141,9 @@ static long *render_bands_alloc(const struct render_job *job, int *rc)
 	long *left;
 
 	*rc = 0;
-	if (!job->band_done || job->band_rows < 1)
+	if (!job->band_done || job->band_rows < 1 || rows < 1)
 		return NULL;
-	left = rt_calloc((size_t)((rows + job->band_rows - 1) / job->band_rows), sizeof(*left));
+	left = rt_calloc((size_t)(1 + (rows - 1) / job->band_rows), sizeof(*left));
 	if (!left) {
 		*rc = -RT_E_NOMEM;
 		return NULL;

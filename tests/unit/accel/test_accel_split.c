@@ -108,7 +108,7 @@ static void test_accel_split_partition_matches_plain_loop(void **state)
 {
 	static struct build_ref a[MAX_REFS], b[MAX_REFS];
 	struct build_box ba[4], bb[4];
-	static const struct shape *shapes;
+	static struct shape shapes[MAX_REFS];
 	int round;
 
 	(void)state;
@@ -119,7 +119,7 @@ static void test_accel_split_partition_matches_plain_loop(void **state)
 		double pos = rng() < 0.8 ? coord() : rng() < 0.5 ? 0.0 : -0.0;
 
 		for (i = 0; i < n; i++)
-			random_ref(&a[i], (const struct shape *)&shapes + i);
+			random_ref(&a[i], &shapes[i]);
 		memcpy(b, a, n * sizeof(*a));
 		split = accel_partition(a, n, axis, pos, ba);
 		assert_int_equal(split, plain_partition(b, n, axis, pos, bb));
@@ -133,7 +133,7 @@ static void test_accel_split_pairs_match_binning(void **state)
 	struct build_ref a[2], b[2];
 	struct build_box box, centres, ba[4], bb[4];
 	struct accel_bins bins;
-	static const struct shape *shapes;
+	static struct shape shapes[2];
 	int round, splits = 0;
 
 	(void)state;
@@ -143,8 +143,8 @@ static void test_accel_split_pairs_match_binning(void **state)
 		int depth = round % 50 == 0 ? ACCEL_SAH_DEPTH : round % 40;
 		size_t sa, sb;
 
-		random_ref(&a[0], (const struct shape *)&shapes);
-		random_ref(&a[1], (const struct shape *)&shapes + 1);
+		random_ref(&a[0], &shapes[0]);
+		random_ref(&a[1], &shapes[1]);
 		if (round % 7 == 0)
 			a[1] = a[0];
 		accel_refs_bounds(a, 2, &box, &centres);

@@ -232,6 +232,50 @@ static void test_png_idat_bands_same_stream(void **state)
 	}
 }
 
+/* A strip's filter reads the last row of the band above it, so it may be
+ * compressed only once both bands are final: bands filled and told one at
+ * a time from the bottom up, each only after its own rows are written,
+ * must still give the one-pass stream. */
+static void test_png_idat_strip_waits_for_band_above(void **state)
+{
+	static const int heights[] = { 65, 128, 200 };
+	size_t i;
+
+	(void)state;
+	for (i = 0; i < sizeof(heights) / sizeof(heights[0]); i++) {
+		int n = (heights[i] + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS, b;
+		size_t stride = 41 * 3;
+		struct image img, ref;
+		struct png_idat want, got;
+		struct png_idat_strips *st;
+		struct diag d;
+
+		memset(&d, 0, sizeof(d));
+		assert_int_equal(image_alloc(&img, 41, heights[i], &d), 0);
+		assert_int_equal(image_alloc(&ref, 41, heights[i], &d), 0);
+		fill_pixels(&ref, (unsigned)i + 7);
+		memset(img.pixels, 0, stride * (size_t)heights[i]);
+		assert_int_equal(png_idat_compress(&ref, &want, &d), 0);
+		assert_int_equal(png_idat_strips_open(&img, 1, &st, &d), 0);
+		for (b = n - 1; b >= 0; b--) {
+			int y0 = b * PNG_IDAT_STRIP_ROWS;
+			int y1 = y0 + PNG_IDAT_STRIP_ROWS < heights[i] ? y0 + PNG_IDAT_STRIP_ROWS : heights[i];
+
+			memcpy(img.pixels + (size_t)y0 * stride, ref.pixels + (size_t)y0 * stride,
+			       (size_t)(y1 - y0) * stride);
+			png_idat_strips_band_done(st, b, 0);
+		}
+		assert_int_equal(png_idat_strips_finish(st, &got, &d), 0);
+		assert_int_equal(got.len, want.len);
+		assert_memory_equal(got.data, want.data, want.len);
+		png_idat_free(&got);
+		png_idat_free(&want);
+		png_idat_strips_free(st);
+		image_free(&img);
+		image_free(&ref);
+	}
+}
+
 static unsigned char *slurp(const char *path, size_t *len)
 {
 	FILE *f = fopen(path, "rb");
@@ -339,6 +383,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_png_idat_heights),
 		cmocka_unit_test(test_png_idat_out_of_memory),
 		cmocka_unit_test(test_png_idat_bands_same_stream),
+		cmocka_unit_test(test_png_idat_strip_waits_for_band_above),
 		cmocka_unit_test(test_png_writer_same_file),
 		cmocka_unit_test(test_png_idat_bands_out_of_memory),
 	};
