@@ -51,24 +51,21 @@ static inline bool leaf_occluded(const struct accel *a, uintptr_t slot, const st
 	return false;
 }
 
-static const struct shape *ACCEL_WALK(intersect)(const struct accel *a, const struct ray *r,
-						 double t_min, double *t_max)
+/* The nearest-hit walk of the subtree under `node`, the hit so far
+ * `hit`: also the packet walk's (accel_packet.h) for a ray left alone in
+ * its packet. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline const struct shape *ACCEL_WALK(subtree)(const struct accel *a, size_t node,
+						      const struct ray_slab_sse *vp,
+						      const struct ray *r, double t_min,
+						      double *t_max, const struct shape *hit)
 {
-	const struct shape *hit = NULL;
 	struct { uintptr_t slot; double entry; } stack[ACCEL_STACK];
-	struct ray_slab rs;
-	struct ray_slab_sse v;
-	uintptr_t node = 0;
-	size_t i;
+	const struct ray_slab_sse v = *vp;
 	int top = 0;
 
-	for (i = 0; i < a->n_unbounded; i++)
-		if (shape_intersect(a->unbounded[i], r, t_min, t_max))
-			hit = a->unbounded[i];
-	if (a->n_nodes == 0)
-		return hit;
-	ray_slab_init(&rs, r);
-	ray_slab_sse_init(&v, &rs);
 	for (;;) {
 		const struct bvh_node *n = &a->nodes[node];
 		double e[2];
@@ -106,6 +103,24 @@ static const struct shape *ACCEL_WALK(intersect)(const struct accel *a, const st
 		}
 		node = accel_slot_index(stack[top].slot);
 	}
+}
+
+static const struct shape *ACCEL_WALK(intersect)(const struct accel *a, const struct ray *r,
+						 double t_min, double *t_max)
+{
+	const struct shape *hit = NULL;
+	struct ray_slab rs;
+	struct ray_slab_sse v;
+	size_t i;
+
+	for (i = 0; i < a->n_unbounded; i++)
+		if (shape_intersect(a->unbounded[i], r, t_min, t_max))
+			hit = a->unbounded[i];
+	if (a->n_nodes == 0)
+		return hit;
+	ray_slab_init(&rs, r);
+	ray_slab_sse_init(&v, &rs);
+	return ACCEL_WALK(subtree)(a, 0, &v, r, t_min, t_max, hit);
 }
 
 static bool ACCEL_WALK(occluded)(const struct accel *a, const struct ray *r, double t_min,

@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <string.h>
 
+#include "render/render_packet.h"
 #include "render/samples.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
@@ -36,6 +37,7 @@ struct render_shared {
 	const struct render_job *job;
 	struct image *img;
 	long next_block;		/* taken with an atomic add */
+	bool packets;		/* render_packets_wanted */
 	long blocks_done;
 };
 
@@ -59,7 +61,7 @@ static bool render_cancelled(const struct render_job *job)
 
 /* Renders one block of the job's rectangle, clipped to it. */
 static void render_block(const struct render_job *job, struct image *img, long block,
-			struct ray_counts *counts)
+			bool packets, struct ray_counts *counts)
 {
 	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
 	int tx0 = job->x0 + (int)(block % blocks_x) * RENDER_BLOCK;
@@ -70,6 +72,10 @@ static void render_block(const struct render_job *job, struct image *img, long b
 
 	if (job->samples > 1) {
 		render_block_samples(job, img, tx0, ty0, tx1, ty1, counts);
+		return;
+	}
+	if (packets) {
+		render_block_packets(job, img, tx0, ty0, tx1, ty1, counts);
 		return;
 	}
 	for (y = ty0; y < ty1; y++) {
@@ -113,7 +119,7 @@ static void render_take_blocks(struct render_worker *w, bool report)
 		long done;
 		if (t >= blocks)
 			break;
-		render_block(job, sh->img, t, &counts);
+		render_block(job, sh->img, t, sh->packets, &counts);
 		done = __atomic_add_fetch(&sh->blocks_done, 1, __ATOMIC_RELAXED);
 		if (report && job->progress)
 			job->progress(job->progress_ctx, done, blocks);
@@ -163,6 +169,7 @@ int render_image(const struct render_job *job, struct image *img,
 	memset(&shared, 0, sizeof(shared));
 	shared.job = job;
 	shared.img = img;
+	shared.packets = render_packets_wanted();
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;

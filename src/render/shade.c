@@ -7,6 +7,7 @@
 
 #include "accel/accel.h"
 #include "render/glass_stack.h"
+#include "render/shade_hit.h"
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
@@ -198,12 +199,37 @@ struct color render_trace(const struct scene *s, const struct render_settings *r
 	return render_trace_in(s, rs, r, level, counts, &outside);
 }
 
+static struct color render_shade_in(const struct scene *s, const struct render_settings *rs,
+				   const struct ray *r, double t, const struct shape *hit,
+				   int level, struct ray_counts *counts,
+				   const struct glass_stack *glass);
+
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
 				   const struct ray *r, int level, struct ray_counts *counts,
 				   const struct glass_stack *glass)
 {
-	double t = INFINITY, eps = render_offset(r->origin);
-	const struct shape *hit = accel_intersect(s->accel, r, eps, &t);
+	double t = INFINITY;
+	const struct shape *hit = accel_intersect(s->accel, r, render_offset(r->origin), &t);
+
+	return render_shade_in(s, rs, r, t, hit, level, counts, glass);
+}
+
+struct color render_shade_hit(const struct scene *s, const struct render_settings *rs,
+			      const struct ray *r, double t, const struct shape *hit,
+			      struct ray_counts *counts)
+{
+	static const struct glass_stack outside = { 0, { NULL } };
+
+	return render_shade_in(s, rs, r, t, hit, 1, counts, &outside);
+}
+
+/* render_trace_in from the ray's nearest hit on: the shape and its t. */
+static struct color render_shade_in(const struct scene *s, const struct render_settings *rs,
+				   const struct ray *r, double t, const struct shape *hit,
+				   int level, struct ray_counts *counts,
+				   const struct glass_stack *glass)
+{
+	double eps;
 	const struct material *m;
 	struct vec3 p, n, refl;
 	struct color base, c, spec_color;

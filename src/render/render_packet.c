@@ -1,0 +1,55 @@
+/* The primary rays of a block in packets of 4x4 pixels: neighbouring rays
+ * meet the same nodes, which a packet then loads and tests once for all
+ * (accel_intersect_packet, four rays to an AVX2 operation), and each pixel
+ * is shaded from its ray's hit as render_trace would shade it. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "render/render_packet.h"
+#include "render/shade_hit.h"
+#include "render/shade_math.h"
+#include "scene/scene_impl.h"
+
+#define PACKET_SIDE 4
+
+bool render_packets_wanted(void)
+{
+	const char *p = getenv("WHITTED_PACKETS");
+
+	return !(p && strcmp(p, "0") == 0);
+}
+
+void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
+			  int x1, int y1, struct ray_counts *counts)
+{
+	int px, py;
+
+	for (py = y0; py < y1; py += PACKET_SIDE)
+		for (px = x0; px < x1; px += PACKET_SIDE) {
+			struct ray r[PACKET_SIDE * PACKET_SIDE];
+			double t_min[PACKET_SIDE * PACKET_SIDE], t[PACKET_SIDE * PACKET_SIDE];
+			const struct shape *hit[PACKET_SIDE * PACKET_SIDE];
+			int n = 0, i, x, y;
+
+			for (y = py; y < py + PACKET_SIDE && y < y1; y++)
+				for (x = px; x < px + PACKET_SIDE && x < x1; x++) {
+					r[n] = camera_ray(job->camera, x, y);
+					t_min[n] = render_offset(r[n].origin);
+					t[n++] = INFINITY;
+				}
+			accel_intersect_packet(job->scene->accel, r, n, t_min, t, hit);
+			i = 0;
+			for (y = py; y < py + PACKET_SIDE && y < y1; y++)
+				for (x = px; x < px + PACKET_SIDE && x < x1; x++, i++) {
+					uint8_t *out = img->pixels +
+						       ((size_t)(y - job->y0) * (size_t)img->width +
+							(size_t)(x - job->x0)) * 3;
+					struct color c = render_shade_hit(job->scene, &job->settings,
+									  &r[i], t[i], hit[i], counts);
+					counts->primary++;
+					render_color_to_rgb8(c, out);
+				}
+		}
+}
