@@ -122,23 +122,25 @@ static inline void packet_node(const struct bvh_node *node, const struct packet_
 			b[c][k][1] = _mm256_set1_pd(node->bounds[1][k][c]);
 		}
 	for (g = 0; g < ACCEL_PACKET; g += 4) {
-		__m256d e[2];
+		__m256d lo[2], hi[2], e[2];
 		if (!(mask >> g & 15))
 			continue;
-		for (c = 0; c < 2; c++) {
-			__m256d lo = _mm256_loadu_pd(t_min + g), hi = _mm256_loadu_pd(t_max + g);
-			for (k = 0; k < 3; k++) {
-				__m256d o = _mm256_loadu_pd(ps->o[k] + g);
-				__m256d inv = _mm256_loadu_pd(ps->inv[k] + g);
-				__m256d nr = _mm256_loadu_pd(ps->near[k] + g);
+		lo[0] = lo[1] = _mm256_loadu_pd(t_min + g);
+		hi[0] = hi[1] = _mm256_loadu_pd(t_max + g);
+		for (k = 0; k < 3; k++) {
+			__m256d o = _mm256_loadu_pd(ps->o[k] + g);
+			__m256d inv = _mm256_loadu_pd(ps->inv[k] + g);
+			__m256d nr = _mm256_loadu_pd(ps->near[k] + g);
+			for (c = 0; c < 2; c++) {
 				__m256d ta = _mm256_mul_pd(_mm256_sub_pd(b[c][k][0], o), inv);
 				__m256d tb = _mm256_mul_pd(_mm256_sub_pd(b[c][k][1], o), inv);
 				/* max(slab, lo) keeps lo for a NaN slab, as alone. */
-				lo = _mm256_max_pd(_mm256_blendv_pd(ta, tb, nr), lo);
-				hi = _mm256_min_pd(_mm256_blendv_pd(tb, ta, nr), hi);
+				lo[c] = _mm256_max_pd(_mm256_blendv_pd(ta, tb, nr), lo[c]);
+				hi[c] = _mm256_min_pd(_mm256_blendv_pd(tb, ta, nr), hi[c]);
 			}
-			e[c] = _mm256_blendv_pd(lo, inf, _mm256_cmp_pd(lo, hi, _CMP_NLE_UQ));
 		}
+		for (c = 0; c < 2; c++)
+			e[c] = _mm256_blendv_pd(lo[c], inf, _mm256_cmp_pd(lo[c], hi[c], _CMP_NLE_UQ));
 		_mm256_storeu_pd(e0 + g, e[0]);
 		_mm256_storeu_pd(e1 + g, e[1]);
 		hit0 |= (uint32_t)_mm256_movemask_pd(_mm256_cmp_pd(e[0], inf, _CMP_NEQ_UQ)) << g;
