@@ -258,6 +258,12 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	return blocked;
 }
 
+bool accel_packets_pay(const struct accel *a)
+{
+	(void)a;
+	return false;
+}
+
 size_t accel_node_count(const struct accel *a)
 {
 	(void)a;

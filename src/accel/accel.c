@@ -160,6 +160,11 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	return walk_sse2_occluded_packet(a, r, n, t_min, t_max);
 }
 
+bool accel_packets_pay(const struct accel *a)
+{
+	return a->walk_avx2;
+}
+
 const char *accel_walk_name(const struct accel *a)
 {
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)

@@ -169,7 +169,7 @@ int render_image(const struct render_job *job, struct image *img,
 	memset(&shared, 0, sizeof(shared));
 	shared.job = job;
 	shared.img = img;
-	shared.packets = render_packets_wanted();
+	shared.packets = render_packets_wanted(job->scene->accel);
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;

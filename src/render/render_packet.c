@@ -14,11 +14,15 @@
 
 #define PACKET_SIDE 4	/* PACKET_SIDE^2 <= ACCEL_PACKET */
 
-bool render_packets_wanted(void)
+bool render_packets_wanted(const struct accel *a)
 {
 	const char *p = getenv("WHITTED_PACKETS");
 
-	return !(p && strcmp(p, "0") == 0);
+	if (p && strcmp(p, "0") == 0)
+		return false;
+	if (p && strcmp(p, "1") == 0)
+		return true;
+	return accel_packets_pay(a);
 }
 
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
