@@ -236,6 +236,19 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 		mask = stack[top].mask & open;
 		if (!mask)
 			continue;
+		if (!(mask & (mask - 1))) {
+			/* Alone: the single walk, as for the nearest hit. */
+			int i1 = __builtin_ctz(mask);
+			struct ray_slab rs;
+			struct ray_slab_sse v;
+
+			ray_slab_init(&rs, r + i1);
+			ray_slab_sse_init(&v, &rs);
+			if (ACCEL_WALK(occluded_subtree)(a, accel_slot_index(stack[top].slot), &v,
+							 r + i1, t_min[i1], t_max[i1]))
+				open &= ~mask;
+			continue;
+		}
 		nd = &a->nodes[accel_slot_index(stack[top].slot)];
 		packet_node(nd, &ps, mask, t_min, t_max, e0, e1, &h[0], &h[1], &n1);
 		for (c = 0; c < 2; c++) {
