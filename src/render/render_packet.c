@@ -1,7 +1,10 @@
-/* The primary rays of a block in packets of 4x4 pixels: neighbouring rays
- * meet the same nodes, which a packet then loads and tests once for all
- * (accel_intersect_packet, four rays to an AVX2 operation), and each pixel
- * is shaded from its ray's hit as render_trace would shade it. */
+/* The primary rays of a block in packets of 4x4 pixels, and their hits'
+ * shadow rays in one packet a light: neighbouring rays meet the same
+ * nodes, which a packet then loads and tests once for all
+ * (accel_intersect_packet, accel_occluded_packet: four rays to an AVX2
+ * operation), and each pixel is shaded from its ray's hit with those
+ * shadow answers as render_trace would shade it (shade_hit.h).  The
+ * reflections and their shadows stay single rays: they part at once. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
