@@ -31,11 +31,11 @@ static inline void packet_leaf(const struct accel *a, uintptr_t slot, const stru
 			       const struct shape **hit)
 {
 	unsigned count = accel_slot_tag(slot), k;
-	const struct shape *const *sh = (const struct shape *const *)&slot;
+	const struct shape *one = (const struct shape *)slot, *const *sh = &one;
 	uint32_t m;
 
 	if (count == 0) {
-		if (!slot)
+		if (!one)
 			return;
 		count = 1;
 	} else {
@@ -53,11 +53,11 @@ static inline uint32_t packet_leaf_any(const struct accel *a, uintptr_t slot,
 				       const double *t_max, double *t)
 {
 	unsigned count = accel_slot_tag(slot), k;
-	const struct shape *const *sh = (const struct shape *const *)&slot;
+	const struct shape *one = (const struct shape *)slot, *const *sh = &one;
 	uint32_t blocked = 0, m;
 
 	if (count == 0) {
-		if (!slot)
+		if (!one)
 			return 0;
 		count = 1;
 	} else {
@@ -118,7 +118,9 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 {
 	/* Waiting child j keeps its rays' entries in entry[buf[j]]: the box
 	 * test writes them straight into the next two, and a push that wants
-	 * them the other way round swaps two indices instead of copying. */
+	 * them the other way round swaps two indices instead of copying.  At
+	 * most two children wait for each node on the path down, so twice the
+	 * single walk's stack holds them. */
 	struct { uintptr_t slot; uint32_t mask; } stack[2 * ACCEL_STACK];
 	double entry[2 * ACCEL_STACK + 2][ACCEL_PACKET];
 	int buf[2 * ACCEL_STACK + 2];
