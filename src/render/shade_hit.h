@@ -15,6 +15,7 @@
 /* A ray's nearest hit, and what the shading needs of it. */
 struct render_point {
 	const struct shape *hit;
+	double t;
 	struct vec3 p, n, refl;	/* n turned to face the ray; refl its mirror direction */
 	double dn, eps;		/* d.n (at most 0); the offset off the surface */
 	struct color base, spec_color;
