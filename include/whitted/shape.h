@@ -103,7 +103,7 @@ static inline uint32_t shape_intersect_packet(const struct shape *s, const struc
 
 	if (s->ops->intersect_packet)
 		return s->ops->intersect_packet(s, r, active, t_min, t_max);
-	for (i = 0; active >> i; i++)
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++)
 		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
 			hit |= (uint32_t)1 << i;
 	return hit;

@@ -388,6 +388,38 @@ static void test_packet_shape_packet_method(void **state)
 	scene_destroy(s);
 }
 
+/* The default packet method on a whole mask of RT_PACKET_MAX rays (the
+ * top bit too): each ray as intersect answers it alone. */
+static void test_packet_default_method_full_mask(void **state)
+{
+	struct shape *sh = sphere_create(vec3_make(0, 0, 0), 5, &mat);
+	struct ray r[RT_PACKET_MAX];
+	double t_min[RT_PACKET_MAX], t[RT_PACKET_MAX];
+	uint32_t hit;
+	int i, hits = 0;
+
+	(void)state;
+	assert_non_null(sh);
+	assert_null(sh->ops->intersect_packet);
+	rng_seed(21);
+	for (i = 0; i < RT_PACKET_MAX; i++) {
+		r[i].origin = vec3_make(uniform(-8, 8), -20, uniform(-8, 8));
+		r[i].dir = vec3_make(0, 1, 0);
+		t_min[i] = 1e-6;
+		t[i] = INFINITY;
+	}
+	hit = shape_intersect_packet(sh, r, ~(uint32_t)0, t_min, t);
+	for (i = 0; i < RT_PACKET_MAX; i++) {
+		double ts = INFINITY;
+		bool one = shape_intersect(sh, &r[i], t_min[i], &ts);
+		assert_int_equal(one, (bool)(hit >> i & 1));
+		assert_memory_equal(&ts, &t[i], sizeof(ts));
+		hits += one;
+	}
+	assert_true(hits > 4 && hits < RT_PACKET_MAX);
+	shape_destroy(sh);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -396,6 +428,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
 		cmocka_unit_test(test_packet_unbounded_and_empty),
 		cmocka_unit_test(test_packet_shape_packet_method),
+		cmocka_unit_test(test_packet_default_method_full_mask),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }
