@@ -235,6 +235,35 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 	return q.blocked;
 }
 
+/* whitted's packets (accel.h) as single Embree queries, one ray after
+ * another: the reference's rays are the ones it has always traced. */
+void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
+			    const double *t_min, double *t_max, const struct shape **hit)
+{
+	int i;
+
+	for (i = 0; i < n; i++)
+		hit[i] = accel_intersect(a, r + i, t_min[i], t_max + i);
+}
+
+uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
+			       const double *t_min, const double *t_max)
+{
+	uint32_t blocked = 0;
+	int i;
+
+	for (i = 0; i < n; i++)
+		if (accel_occluded(a, r + i, t_min[i], t_max[i]))
+			blocked |= (uint32_t)1 << i;
+	return blocked;
+}
+
+bool accel_packets_pay(const struct accel *a)
+{
+	(void)a;
+	return false;
+}
+
 size_t accel_node_count(const struct accel *a)
 {
 	(void)a;

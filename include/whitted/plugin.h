@@ -66,7 +66,8 @@
  * History: 1, the first (never released alone); 2, the first released:
  * host->solve_quadratic and host->ray_triangle, struct material's kt and
  * ior, struct shape_ops' specular_color_at and closed, struct
- * pov_options' shadow_twin and floor_texture. */
+ * pov_options' shadow_twin and floor_texture; 3: struct shape_ops'
+ * intersect_packet (at its end) and RT_PACKET_MAX (shape.h). */
 #ifndef RT_PLUGIN_H
 #define RT_PLUGIN_H
 
@@ -79,7 +80,7 @@
 #include "shape.h"
 #include "vec3.h"
 
-#define WHITTED_PLUGIN_ABI 2
+#define WHITTED_PLUGIN_ABI 3
 
 /* Defines the symbol the host checks first; write it once in the plugin's
  * file, at file scope. */

@@ -6,11 +6,15 @@
 #define RT_SHAPE_H
 
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 
 #include "aabb.h"
 #include "material.h"
 #include "ray.h"
+
+/* The most rays intersect_packet is given at once: the bits of its mask. */
+#define RT_PACKET_MAX 32
 
 struct mesh;
 struct mesh_options;
@@ -69,6 +73,14 @@ struct shape_ops {
 	 * closed (a triangle, an open or clipped quadric), which --glass
 	 * accepts with a note. */
 	bool (*closed)(const struct shape *s);
+	/* Optional (ABI 3).  intersect for each ray r[i] whose bit i is set
+	 * in `active` (i < RT_PACKET_MAX), in (t_min[i], t_max[i]), shrinking
+	 * t_max[i] on a hit; the mask of the rays hit.  Each ray's answer
+	 * must be intersect's to the bit (the same hit, the same t): images
+	 * do not depend on which of the two ran.  NULL: intersect, ray by
+	 * ray. */
+	uint32_t (*intersect_packet)(const struct shape *s, const struct ray *r, uint32_t active,
+				     const double *t_min, double *t_max);
 };
 
 struct shape {
@@ -80,6 +92,21 @@ static inline bool shape_intersect(const struct shape *s, const struct ray *r,
 				   double t_min, double *t_max)
 {
 	return s->ops->intersect(s, r, t_min, t_max);
+}
+
+/* See intersect_packet. */
+static inline uint32_t shape_intersect_packet(const struct shape *s, const struct ray *r,
+					      uint32_t active, const double *t_min, double *t_max)
+{
+	uint32_t hit = 0;
+	int i;
+
+	if (s->ops->intersect_packet)
+		return s->ops->intersect_packet(s, r, active, t_min, t_max);
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++)
+		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
+			hit |= (uint32_t)1 << i;
+	return hit;
 }
 
 static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)

@@ -125,6 +125,8 @@ static inline int node_hits(const struct bvh_node *node, const struct ray_slab_s
 
 #define ACCEL_WALK(name) walk_sse2_##name
 #include "accel/accel_walk.h"
+#include "accel/accel_packet_c.h"
+#include "accel/accel_packet.h"
 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 				    double t_min, double *t_max)
@@ -139,6 +141,28 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 	if (a->walk_avx2)
 		return accel_avx2_occluded(a, r, t_min, t_max);
 	return walk_sse2_occluded(a, r, t_min, t_max);
+}
+
+void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
+			    const double *t_min, double *t_max, const struct shape **hit)
+{
+	if (a->walk_avx2)
+		accel_avx2_intersect_packet(a, r, n, t_min, t_max, hit);
+	else
+		walk_sse2_intersect_packet(a, r, n, t_min, t_max, hit);
+}
+
+uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
+			       const double *t_min, const double *t_max)
+{
+	if (a->walk_avx2)
+		return accel_avx2_occluded_packet(a, r, n, t_min, t_max);
+	return walk_sse2_occluded_packet(a, r, n, t_min, t_max);
+}
+
+bool accel_packets_pay(const struct accel *a)
+{
+	return a->walk_avx2;
 }
 
 const char *accel_walk_name(const struct accel *a)

@@ -79,5 +79,9 @@ bool accel_avx2_usable(void);
 const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
 					 double t_min, double *t_max);
 bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max);
+void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				 const double *t_min, double *t_max, const struct shape **hit);
+uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
+				    const double *t_min, const double *t_max);
 
 #endif

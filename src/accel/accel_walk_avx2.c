@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "accel/accel.h"
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
 
@@ -81,6 +82,78 @@ static inline int node_hits(const struct bvh_node *node, const struct ray_slab_s
 #define ACCEL_WALK(name) walk_avx2_##name
 #include "accel/accel_walk.h"
 
+/* The packet walks' box tests, four rays to an operation: the rays'
+ * values side by side, each lane's arithmetic that of node_entries above
+ * (and of accel.c's), the near and far planes picked per lane by the sign
+ * of the ray's direction instead of by offset. */
+struct packet_slab {
+	double o[3][ACCEL_PACKET], inv[3][ACCEL_PACKET];
+	double near[3][ACCEL_PACKET];	/* -1 where the maximum is the near plane, else 0 */
+};
+
+static inline void packet_slab_init(struct packet_slab *ps, const struct ray *r, int n)
+{
+	int i, k;
+
+	memset(ps, 0, sizeof(*ps));
+	for (i = 0; i < n; i++) {
+		struct ray_slab rs;
+		ray_slab_init(&rs, r + i);
+		for (k = 0; k < 3; k++) {
+			ps->o[k][i] = rs.o[k];
+			ps->inv[k][i] = rs.inv[k];
+			ps->near[k][i] = rs.near[k] ? -1.0 : 0.0;
+		}
+	}
+}
+
+static inline void packet_node(const struct bvh_node *node, const struct packet_slab *ps,
+			       uint32_t mask, const double *t_min, const double *t_max,
+			       double *e0, double *e1, uint32_t *h0, uint32_t *h1, uint32_t *n1)
+{
+	const __m256d inf = _mm256_set1_pd(INFINITY);
+	__m256d b[2][3][2];
+	uint32_t hit0 = 0, hit1 = 0, near1 = 0;
+	int g, c, k;
+
+	for (c = 0; c < 2; c++)
+		for (k = 0; k < 3; k++) {
+			b[c][k][0] = _mm256_set1_pd(node->bounds[0][k][c]);
+			b[c][k][1] = _mm256_set1_pd(node->bounds[1][k][c]);
+		}
+	for (g = 0; g < ACCEL_PACKET; g += 4) {
+		__m256d lo[2], hi[2], e[2];
+		if (!(mask >> g & 15))
+			continue;
+		lo[0] = lo[1] = _mm256_loadu_pd(t_min + g);
+		hi[0] = hi[1] = _mm256_loadu_pd(t_max + g);
+		for (k = 0; k < 3; k++) {
+			__m256d o = _mm256_loadu_pd(ps->o[k] + g);
+			__m256d inv = _mm256_loadu_pd(ps->inv[k] + g);
+			__m256d nr = _mm256_loadu_pd(ps->near[k] + g);
+			for (c = 0; c < 2; c++) {
+				__m256d ta = _mm256_mul_pd(_mm256_sub_pd(b[c][k][0], o), inv);
+				__m256d tb = _mm256_mul_pd(_mm256_sub_pd(b[c][k][1], o), inv);
+				/* max(slab, lo) keeps lo for a NaN slab, as alone. */
+				lo[c] = _mm256_max_pd(_mm256_blendv_pd(ta, tb, nr), lo[c]);
+				hi[c] = _mm256_min_pd(_mm256_blendv_pd(tb, ta, nr), hi[c]);
+			}
+		}
+		for (c = 0; c < 2; c++)
+			e[c] = _mm256_blendv_pd(lo[c], inf, _mm256_cmp_pd(lo[c], hi[c], _CMP_NLE_UQ));
+		_mm256_storeu_pd(e0 + g, e[0]);
+		_mm256_storeu_pd(e1 + g, e[1]);
+		hit0 |= (uint32_t)_mm256_movemask_pd(_mm256_cmp_pd(e[0], inf, _CMP_NEQ_UQ)) << g;
+		hit1 |= (uint32_t)_mm256_movemask_pd(_mm256_cmp_pd(e[1], inf, _CMP_NEQ_UQ)) << g;
+		near1 |= (uint32_t)_mm256_movemask_pd(_mm256_cmp_pd(e[1], e[0], _CMP_LT_OQ)) << g;
+	}
+	*h0 = hit0;
+	*h1 = hit1;
+	*n1 = near1;
+}
+
+#include "accel/accel_packet.h"
+
 /* WHITTED_ISA=sse2 keeps the SSE2 walks, to compare the two. */
 bool accel_avx2_usable(void)
 {
@@ -100,6 +173,18 @@ const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray
 bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
 {
 	return walk_avx2_occluded(a, r, t_min, t_max);
+}
+
+void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				 const double *t_min, double *t_max, const struct shape **hit)
+{
+	walk_avx2_intersect_packet(a, r, n, t_min, t_max, hit);
+}
+
+uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
+				    const double *t_min, const double *t_max)
+{
+	return walk_avx2_occluded_packet(a, r, n, t_min, t_max);
 }
 #else
 bool accel_avx2_usable(void)
@@ -124,5 +209,27 @@ bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_mi
 	(void)t_min;
 	(void)t_max;
 	return false;
+}
+
+void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				 const double *t_min, double *t_max, const struct shape **hit)
+{
+	(void)a;
+	(void)r;
+	(void)n;
+	(void)t_min;
+	(void)t_max;
+	(void)hit;
+}
+
+uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
+				    const double *t_min, const double *t_max)
+{
+	(void)a;
+	(void)r;
+	(void)n;
+	(void)t_min;
+	(void)t_max;
+	return 0;
 }
 #endif

@@ -9,6 +9,7 @@
 
 #include "base/alloc.h"
 #include "render/camera_span.h"
+#include "render/render_packet.h"
 #include "render/samples.h"
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
@@ -45,6 +46,7 @@ struct render_shared {
 	const struct render_job *job;
 	struct image *img;
 	long next_block;		/* taken with an atomic add */
+	bool packets;		/* render_packets_wanted */
 	long blocks_done;
 	long *band_left;		/* blocks not yet rendered per band; NULL: no bands */
 	pthread_mutex_t band_lock;	/* over band_left */
@@ -74,7 +76,7 @@ static bool render_cancelled(const struct render_job *job)
 
 /* Renders one block of the job's rectangle, clipped to it. */
 static void render_block(const struct render_job *job, struct image *img, long block,
-			struct ray_counts *counts)
+			bool packets, struct ray_counts *counts)
 {
 	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
 	int tx0 = job->x0 + (int)(block % blocks_x) * RENDER_BLOCK;
@@ -86,6 +88,10 @@ static void render_block(const struct render_job *job, struct image *img, long b
 
 	if (job->samples > 1) {
 		render_block_samples(job, img, tx0, ty0, tx1, ty1, counts);
+		return;
+	}
+	if (packets) {
+		render_block_packets(job, img, tx0, ty0, tx1, ty1, counts);
 		return;
 	}
 	camera_span_init(&span, job->camera, tx0, tx1);
@@ -195,7 +201,7 @@ static void render_take_blocks(struct render_worker *w, bool report)
 		long done;
 		if (t >= blocks)
 			break;
-		render_block(job, sh->img, t, &counts);
+		render_block(job, sh->img, t, sh->packets, &counts);
 		if (sh->band_left)
 			render_bands_count(sh, t, w->index);
 		done = __atomic_add_fetch(&sh->blocks_done, 1, __ATOMIC_RELAXED);
@@ -251,6 +257,7 @@ int render_image(const struct render_job *job, struct image *img,
 	if (rc < 0)
 		return diag_fail(d, RT_E_NOMEM, "out of memory");
 	pthread_mutex_init(&shared.band_lock, NULL);
+	shared.packets = render_packets_wanted(job->scene->accel);
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;

@@ -1,0 +1,19 @@
+/* A block's primary rays traced as packets (render_packet.c). */
+#ifndef RT_RENDER_PACKET_H
+#define RT_RENDER_PACKET_H
+
+#include <stdbool.h>
+
+#include "accel/accel.h"
+#include "whitted/render.h"
+
+/* Whether to trace packets: where they pay (accel_packets_pay), unless
+ * WHITTED_PACKETS=0 asks for one ray at a time or WHITTED_PACKETS=1 for
+ * packets anyway (to compare: the images are the same). */
+bool render_packets_wanted(const struct accel *a);
+/* Renders the pixels [x0, x1) x [y0, y1) of the job's image, one ray
+ * through each centre, as render_image.c's loop does, to the byte. */
+void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
+			  int x1, int y1, struct ray_counts *counts);
+
+#endif

@@ -1,0 +1,434 @@
+/* The packet walks against the single-ray walks: every ray of a packet
+ * gets what it gets alone, to the bit (the same shape, not only one at the
+ * same distance; the same t; the same occlusion), with the AVX2 and the
+ * plain-C box tests, on random scenes of every primitive with packets
+ * coherent and not (rays that disagree on which child is nearer), exact
+ * ties (copies of one shape, cubes that share faces), rays along box faces
+ * and edges (slabs of 0 * inf), and a shape with its own packet method. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "accel/accel_tree.h"
+#include "support.h"
+
+static uint64_t rng_state;
+
+static void rng_seed(uint64_t seed)
+{
+	rng_state = seed * 0x9e3779b97f4a7c15u + 1;
+}
+
+/* xorshift64*: uniform in [0, 1). */
+static double rng(void)
+{
+	rng_state ^= rng_state >> 12;
+	rng_state ^= rng_state << 25;
+	rng_state ^= rng_state >> 27;
+	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+}
+
+static double uniform(double lo, double hi)
+{
+	return lo + (hi - lo) * rng();
+}
+
+static struct vec3 random_point(double half)
+{
+	return vec3_make(uniform(-half, half), uniform(-half, half), uniform(-half, half));
+}
+
+static struct vec3 random_direction(void)
+{
+	for (;;) {
+		struct vec3 v = random_point(1.0);
+		double len = vec3_length(v);
+		if (len > 0.1 && len <= 1.0)
+			return vec3_scale(v, 1.0 / len);
+	}
+}
+
+static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
+
+static void add(struct scene *s, struct shape *sh)
+{
+	struct diag d;
+
+	assert_non_null(sh);
+	assert_int_equal(scene_add_shape(s, sh, &d), 0);
+}
+
+/* A random primitive near c of size about `size`: sphere, triangle,
+ * cube, pyramid or a quadric clipped on some axes or none. */
+static void add_random_shape(struct scene *s, struct vec3 c, double size)
+{
+	double kind = rng();
+
+	if (kind < 0.3) {
+		add(s, sphere_create(c, uniform(0.05, 1.0) * size, &mat));
+	} else if (kind < 0.6) {
+		add(s, triangle_create(vec3_add(c, random_point(size)), vec3_add(c, random_point(size)),
+				       vec3_add(c, random_point(size)), &mat));
+	} else if (kind < 0.7) {
+		add(s, cube_create(c, uniform(0.1, 1.0) * size, &mat));
+	} else if (kind < 0.8) {
+		add(s, pyramid_create(c, uniform(0.1, 1.0) * size, uniform(0.1, 1.0) * size, &mat));
+	} else {
+		double a = uniform(0.2, 1.0), b = uniform(0.2, 1.0), e = uniform(-1.0, 1.0);
+		double r = uniform(0.2, 1.0) * size;
+		double coef[10] = {
+			a, b, e, 0, 0, 0, -2 * a * c.x, -2 * b * c.y, -2 * e * c.z,
+			a * c.x * c.x + b * c.y * c.y + e * c.z * c.z - r * r,
+		};
+		struct vec3 ext = vec3_make(uniform(0.5, 2) * size, rng() < 0.3 ? 0 : size, size);
+
+		add(s, quadric_create(coef, vec3_sub(c, vec3_scale(ext, 0.5)), ext, &mat));
+	}
+}
+
+/* Compares one packet with the single-ray walks, with the box tests of
+ * `avx2`: shapes, t to the bit, occlusion. */
+static void check_packet_with(struct accel *a, bool avx2, const struct ray *r, int n,
+			      const double *t_min, const double *t_max)
+{
+	const struct shape *hit[ACCEL_PACKET];
+	double t[ACCEL_PACKET];
+	uint32_t blocked;
+	int i;
+
+	a->walk_avx2 = avx2;
+	memcpy(t, t_max, (size_t)n * sizeof(*t));
+	accel_intersect_packet(a, r, n, t_min, t, hit);
+	blocked = accel_occluded_packet(a, r, n, t_min, t_max);
+	for (i = 0; i < n; i++) {
+		double ts = t_max[i];
+		const struct shape *one = accel_intersect(a, &r[i], t_min[i], &ts);
+		bool occ = accel_occluded(a, &r[i], t_min[i], t_max[i]);
+
+		if (one != hit[i] || memcmp(&ts, &t[i], sizeof(ts)) != 0 ||
+		    occ != (bool)(blocked >> i & 1)) {
+			print_error("ray %d of %d (%s): alone %s at t = %.17g, occluded %d; in the "
+				    "packet %s at t = %.17g, occluded %d\n", i, n,
+				    avx2 ? "avx2" : "plain C", one ? one->ops->keyword : "nothing",
+				    ts, occ, hit[i] ? hit[i]->ops->keyword : "nothing", t[i],
+				    (int)(blocked >> i & 1));
+			fail();
+		}
+	}
+	assert_int_equal(blocked >> n, 0);
+}
+
+/* With both sets of box tests, where the processor has AVX2. */
+static void check_packet(struct accel *a, const struct ray *r, int n, const double *t_min,
+			 const double *t_max)
+{
+	bool had = a->walk_avx2;
+
+	check_packet_with(a, false, r, n, t_min, t_max);
+	if (accel_avx2_usable())
+		check_packet_with(a, true, r, n, t_min, t_max);
+	a->walk_avx2 = had;
+}
+
+/* A random packet of the kind `kind`: 0, from one point towards a small
+ * patch (a block's primary rays); 1, the same towards a wide cone, whose
+ * rays disagree on which child is nearer; 2, from points of a small
+ * patch towards one point (shadow rays to a light); 3, half towards one
+ * place and half towards another; 4, every ray its own; 5, along the
+ * axes, either way, some components -0. */
+static int random_packet(int kind, double half, struct ray *r, double *t_min, double *t_max)
+{
+	int n = rng() < 0.7 ? ACCEL_PACKET : 1 + (int)(rng() * ACCEL_PACKET), i;
+	struct vec3 o = random_point(1.5 * half), aim = random_point(half);
+	struct vec3 other = random_point(half);
+	double spread = kind == 1 ? half : 0.02 * half;
+	bool open = rng() < 0.5;
+
+	for (i = 0; i < n; i++) {
+		switch (kind) {
+		case 0:
+		case 1:
+			r[i].origin = o;
+			r[i].dir = vec3_normalize(vec3_sub(vec3_add(aim, random_point(spread)), o));
+			break;
+		case 2:
+			r[i].origin = vec3_add(aim, random_point(spread));
+			r[i].dir = vec3_sub(o, r[i].origin);
+			break;
+		case 3:
+			r[i].origin = o;
+			r[i].dir = vec3_sub(i % 2 ? aim : other, o);
+			break;
+		case 4:
+			r[i].origin = random_point(1.5 * half);
+			r[i].dir = random_direction();
+			break;
+		default: {
+			int axis = (int)(rng() * 3);
+			double sign = rng() < 0.5 ? -1.0 : 1.0;
+			r[i].origin = vec3_add(o, random_point(0.1 * half));
+			r[i].dir = vec3_make(axis == 0 ? sign : -0.0 * (rng() < 0.5),
+					     axis == 1 ? sign : 0.0, axis == 2 ? sign : -0.0);
+		}
+		}
+		if (vec3_length(r[i].dir) == 0.0)
+			r[i].dir = random_direction();
+		t_min[i] = kind == 2 ? 1e-6 : open ? 1e-6 : uniform(0, half);
+		t_max[i] = kind == 2 ? 1.0 : open ? INFINITY : uniform(t_min[i], 4 * half);
+	}
+	return n;
+}
+
+static void test_packet_random_scenes_match_single_rays(void **state)
+{
+	int scene_no;
+
+	(void)state;
+	for (scene_no = 0; scene_no < 10; scene_no++) {
+		struct scene *s = scene_create("random");
+		int n = 1 + scene_no * scene_no * 20, i, k;
+		double half = 50;
+		struct diag d;
+
+		rng_seed((uint64_t)scene_no + 7);
+		assert_non_null(s);
+		for (i = 0; i < n; i++)
+			add_random_shape(s, random_point(half), uniform(0.5, 10));
+		if (scene_no % 3 == 0)
+			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+		assert_int_equal(scene_prepare(s, 1, &d), 0);
+		for (k = 0; k < 600; k++) {
+			struct ray r[ACCEL_PACKET];
+			double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+			int m = random_packet(k % 6, half, r, t_min, t_max);
+			check_packet(s->accel, r, m, t_min, t_max);
+		}
+		scene_destroy(s);
+	}
+}
+
+/* Exact ties: eight copies of each of a few spheres, triangles and cubes
+ * (every copy hit at the same t), whose copies the build spreads over
+ * leaves and subtrees; the single walk keeps the first copy it meets, and
+ * so must each ray of a packet. */
+static void test_packet_ties_keep_the_single_walks_shape(void **state)
+{
+	struct scene *s = scene_create("ties");
+	struct diag d;
+	int i, j, k;
+
+	(void)state;
+	rng_seed(99);
+	for (i = 0; i < 30; i++) {
+		struct vec3 c = random_point(20), a = random_point(3), b = random_point(3);
+		double size = uniform(0.5, 3);
+		int kind = i % 3;
+		for (j = 0; j < 8; j++) {
+			if (kind == 0)
+				add(s, sphere_create(c, size, &mat));
+			else if (kind == 1)
+				add(s, triangle_create(c, vec3_add(c, a), vec3_add(c, b), &mat));
+			else
+				add(s, cube_create(c, size, &mat));
+		}
+	}
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 1500; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+		int m = random_packet(k % 6, 20, r, t_min, t_max);
+		check_packet(s->accel, r, m, t_min, t_max);
+	}
+	scene_destroy(s);
+}
+
+/* Unit cubes on an integer lattice, touching (shared faces: ties between
+ * neighbours), and rays on the lattice's planes and lines: from integer
+ * and half-integer points along the axes (slab values of 0 * inf, NaN,
+ * and +-inf) and the diagonals (through edges and corners of boxes). */
+static void test_packet_rays_along_faces_and_edges(void **state)
+{
+	struct scene *s = scene_create("lattice");
+	struct diag d;
+	int x, y, z, k;
+
+	(void)state;
+	rng_seed(5);
+	for (x = 0; x < 6; x++)
+		for (y = 0; y < 6; y++)
+			for (z = 0; z < 6; z++)
+				if (rng() < 0.6)
+					add(s, cube_create(vec3_make(x, y, z), 1.0, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 3000; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+		int n = 1 + (int)(rng() * ACCEL_PACKET), i;
+		struct vec3 o = vec3_make(floor(uniform(-2, 8)), floor(uniform(-2, 8)),
+					  floor(uniform(-2, 8)));
+
+		for (i = 0; i < n; i++) {
+			double c[3];
+			int j;
+			/* Each component of the direction -1, -0, 0 or 1. */
+			for (j = 0; j < 3; j++) {
+				double u = rng();
+				c[j] = u < 0.3 ? -1.0 : u < 0.45 ? -0.0 : u < 0.7 ? 0.0 : 1.0;
+			}
+			if (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0)
+				c[(int)(rng() * 3)] = 1.0;
+			r[i].dir = vec3_make(c[0], c[1], c[2]);
+			r[i].origin = o;
+			if (rng() < 0.5)
+				r[i].origin = vec3_add(o, vec3_make(0.5 * (int)(rng() * 3),
+								    0.5 * (int)(rng() * 3),
+								    0.5 * (int)(rng() * 3)));
+			t_min[i] = 1e-9;
+			t_max[i] = rng() < 0.7 ? INFINITY : floor(uniform(1, 8));
+		}
+		check_packet(s->accel, r, n, t_min, t_max);
+	}
+	scene_destroy(s);
+}
+
+/* No bounded shapes (only the floor), and no shapes at all. */
+static void test_packet_unbounded_and_empty(void **state)
+{
+	struct scene *s = scene_create("floor only");
+	struct ray r[ACCEL_PACKET];
+	double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+	struct diag d;
+	int k;
+
+	(void)state;
+	rng_seed(3);
+	assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 200; k++) {
+		int n = random_packet(k % 6, 50, r, t_min, t_max);
+		check_packet(s->accel, r, n, t_min, t_max);
+	}
+	scene_destroy(s);
+	s = scene_create("empty");
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 20; k++) {
+		int n = random_packet(k % 6, 50, r, t_min, t_max);
+		check_packet(s->accel, r, n, t_min, t_max);
+	}
+	scene_destroy(s);
+}
+
+/* A primitive with its own packet method: the walks call it (and not
+ * intersect ray by ray), and the answers are still the single walk's. */
+static int packet_calls;
+
+static uint32_t counting_intersect_packet(const struct shape *s, const struct ray *r,
+					  uint32_t active, const double *t_min, double *t_max)
+{
+	uint32_t hit = 0;
+	int i;
+
+	packet_calls++;
+	for (i = 0; i < RT_PACKET_MAX; i++)
+		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
+			hit |= (uint32_t)1 << i;
+	return hit;
+}
+
+static void test_packet_shape_packet_method(void **state)
+{
+	struct scene *s = scene_create("packet method");
+	struct shape_ops ops;
+	struct diag d;
+	int i, k, before;
+
+	(void)state;
+	rng_seed(11);
+	for (i = 0; i < 200; i++) {
+		struct shape *sh = sphere_create(random_point(40), uniform(0.5, 4), &mat);
+		assert_non_null(sh);
+		if (i == 0) {
+			ops = *sh->ops;
+			assert_null(ops.intersect_packet);
+			ops.intersect_packet = counting_intersect_packet;
+		}
+		sh->ops = &ops;
+		add(s, sh);
+	}
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (k = 0; k < 600; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+		int n = random_packet(k % 5, 40, r, t_min, t_max);
+		check_packet(s->accel, r, n, t_min, t_max);
+	}
+	before = packet_calls;
+	assert_true(before > 100);
+	/* The default loops intersect: the same answers as the method. */
+	for (k = 0; k < 200; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET], ta[ACCEL_PACKET], tb[ACCEL_PACKET];
+		struct shape *sh = s->shapes[k % s->n_shapes];
+		int n = random_packet(k % 5, 40, r, t_min, t_max);
+		uint32_t mask = (uint32_t)(rng() * 65536.0) & (((uint32_t)1 << n) - 1), ma, mb;
+		struct shape_ops plain = ops;
+
+		plain.intersect_packet = NULL;
+		memcpy(ta, t_max, sizeof(ta));
+		memcpy(tb, t_max, sizeof(tb));
+		ma = shape_intersect_packet(sh, r, mask, t_min, ta);
+		sh->ops = &plain;
+		mb = shape_intersect_packet(sh, r, mask, t_min, tb);
+		sh->ops = &ops;
+		assert_int_equal(ma, mb);
+		assert_memory_equal(ta, tb, (size_t)n * sizeof(double));
+		assert_int_equal(ma & ~mask, 0);
+	}
+	scene_destroy(s);
+}
+
+/* The default packet method on a whole mask of RT_PACKET_MAX rays (the
+ * top bit too): each ray as intersect answers it alone. */
+static void test_packet_default_method_full_mask(void **state)
+{
+	struct shape *sh = sphere_create(vec3_make(0, 0, 0), 5, &mat);
+	struct ray r[RT_PACKET_MAX];
+	double t_min[RT_PACKET_MAX], t[RT_PACKET_MAX];
+	uint32_t hit;
+	int i, hits = 0;
+
+	(void)state;
+	assert_non_null(sh);
+	assert_null(sh->ops->intersect_packet);
+	rng_seed(21);
+	for (i = 0; i < RT_PACKET_MAX; i++) {
+		r[i].origin = vec3_make(uniform(-8, 8), -20, uniform(-8, 8));
+		r[i].dir = vec3_make(0, 1, 0);
+		t_min[i] = 1e-6;
+		t[i] = INFINITY;
+	}
+	hit = shape_intersect_packet(sh, r, ~(uint32_t)0, t_min, t);
+	for (i = 0; i < RT_PACKET_MAX; i++) {
+		double ts = INFINITY;
+		bool one = shape_intersect(sh, &r[i], t_min[i], &ts);
+		assert_int_equal(one, (bool)(hit >> i & 1));
+		assert_memory_equal(&ts, &t[i], sizeof(ts));
+		hits += one;
+	}
+	assert_true(hits > 4 && hits < RT_PACKET_MAX);
+	shape_destroy(sh);
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_packet_random_scenes_match_single_rays),
+		cmocka_unit_test(test_packet_ties_keep_the_single_walks_shape),
+		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
+		cmocka_unit_test(test_packet_unbounded_and_empty),
+		cmocka_unit_test(test_packet_shape_packet_method),
+		cmocka_unit_test(test_packet_default_method_full_mask),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}

@@ -1,0 +1,167 @@
+/* A block's rays in packets (render_packet.c) against one ray at a time:
+ * the same image to the byte and the same ray counts, for scenes big
+ * enough that packets are the default, with the classic lights and with a
+ * spotlight and a falloff (render_direct_full), reflective shapes, a
+ * region whose edges cut the 4x4 packets, and several threads. */
+#define _POSIX_C_SOURCE 200809L	/* setenv */
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "course_scene.h"
+#include "support.h"
+#include "whitted/camera.h"
+#include "whitted/image.h"
+#include "whitted/render.h"
+
+static uint64_t rng_state;
+
+static double rng(void)
+{
+	rng_state ^= rng_state >> 12;
+	rng_state ^= rng_state << 25;
+	rng_state ^= rng_state >> 27;
+	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+}
+
+static double uniform(double lo, double hi)
+{
+	return lo + (hi - lo) * rng();
+}
+
+/* The course scene and 600 small spheres and triangles over it (some of
+ * them mirrors), the floor, and with `special` a spotlight with a falloff. */
+static struct scene *busy_scene(bool special)
+{
+	static const struct material dull = { { 0.8, 0.6, 0.4 }, 0.1, 0.6, 0.3, 0.0, 8, 0.0, 1.0 };
+	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.5, 20, 0.0, 1.0 };
+	struct scene *s = support_parse(course_scene);
+	struct diag d;
+	int i;
+
+	rng_state = 0x1234567u;
+	for (i = 0; i < 600; i++) {
+		struct vec3 c = vec3_make(uniform(-60, 60), uniform(-40, 60), uniform(2, 60));
+		const struct material *m = rng() < 0.3 ? &mirror : &dull;
+		struct shape *sh;
+
+		if (i % 2)
+			sh = sphere_create(c, uniform(0.5, 3), m);
+		else
+			sh = triangle_create(c, vec3_add(c, vec3_make(uniform(-4, 4), 0, uniform(-4, 4))),
+					     vec3_add(c, vec3_make(uniform(-4, 4), uniform(-4, 4), 0)), m);
+		assert_non_null(sh);
+		assert_int_equal(scene_add_shape(s, sh, &d), 0);
+	}
+	if (special) {
+		struct light l;
+
+		memset(&l, 0, sizeof(l));
+		l.pos = vec3_make(20, -60, 90);
+		l.color = color_make(0.6, 0.5, 0.4);
+		l.spot = true;
+		l.axis = vec3_make(-0.2, 0.6, -1);
+		l.cutoff_deg = 35;
+		l.falloff = 1e-5;
+		assert_int_equal(scene_add_light_full(s, &l, &d), 0);
+	}
+	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_true(accel_node_count(s->accel) >= 256);
+	return s;
+}
+
+/* The region [x0, x1) x [y0, y1) at size 90 with WHITTED_PACKETS set to
+ * `packets` ("0", "1" or NULL: the default). */
+static void render_with(const struct scene *s, const char *packets, int threads, int x0,
+			int y0, int x1, int y1, struct image *img, struct ray_counts *counts)
+{
+	struct camera_params cp;
+	struct camera cam;
+	struct render_job job;
+	struct diag d;
+
+	if (packets)
+		assert_int_equal(setenv("WHITTED_PACKETS", packets, 1), 0);
+	else
+		assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
+	camera_params_default(&cp);
+	assert_int_equal(camera_init(&cam, &cp, 90, &d), 0);
+	render_job_init(&job, s, &cam, threads);
+	job.x0 = x0;
+	job.y0 = y0;
+	job.x1 = x1;
+	job.y1 = y1;
+	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
+	assert_int_equal(render_image(&job, img, counts, &d), 0);
+	assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
+}
+
+static void check_same(bool special)
+{
+	static const char *const modes[] = { "1", NULL };
+	static const int threads[] = { 1, 3 };
+	struct scene *s = busy_scene(special);
+	struct image one, other;
+	struct ray_counts n1, n;
+	size_t i, j, lit = 0, bytes = (size_t)(87 - 3) * (size_t)(79 - 6) * 3;
+
+	render_with(s, "0", 1, 3, 6, 87, 79, &one, &n1);
+	for (i = 0; i < bytes; i++)
+		lit += one.pixels[i] != 0;
+	/* The view's upper part is sky: about a third of the bytes lit. */
+	assert_true(lit > bytes / 4);
+	assert_true(n1.shadow > n1.primary && n1.reflection > 1000);
+	for (i = 0; i < sizeof(modes) / sizeof(modes[0]); i++)
+		for (j = 0; j < sizeof(threads) / sizeof(threads[0]); j++) {
+			render_with(s, modes[i], threads[j], 3, 6, 87, 79, &other, &n);
+			assert_memory_equal(one.pixels, other.pixels, bytes);
+			assert_int_equal(n.primary, n1.primary);
+			assert_int_equal(n.shadow, n1.shadow);
+			assert_int_equal(n.reflection, n1.reflection);
+			image_free(&other);
+		}
+	image_free(&one);
+	scene_destroy(s);
+}
+
+static void test_render_packet_classic_lights_same_image(void **state)
+{
+	(void)state;
+	check_same(false);
+}
+
+static void test_render_packet_spot_and_falloff_same_image(void **state)
+{
+	(void)state;
+	check_same(true);
+}
+
+/* Forced on a small tree (the course scene alone, where the default is
+ * one ray at a time) the packets give the same image too. */
+static void test_render_packet_forced_on_a_small_tree(void **state)
+{
+	struct scene *s = support_parse(course_scene);
+	struct image one, other;
+	struct diag d;
+
+	(void)state;
+	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	render_with(s, "0", 2, 0, 0, 90, 90, &one, NULL);
+	render_with(s, "1", 2, 0, 0, 90, 90, &other, NULL);
+	assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
+	image_free(&one);
+	image_free(&other);
+	scene_destroy(s);
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_render_packet_classic_lights_same_image),
+		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
+		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}
