@@ -77,8 +77,10 @@ struct shape_ops {
 	 * in `active` (i < RT_PACKET_MAX), in (t_min[i], t_max[i]), shrinking
 	 * t_max[i] on a hit; the mask of the rays hit.  Each ray's answer
 	 * must be intersect's to the bit (the same hit, the same t): images
-	 * do not depend on which of the two ran.  NULL: intersect, ray by
-	 * ray. */
+	 * do not depend on which of the two ran.  Only the entries whose bit
+	 * is set may be read or written (the host's arrays may be shorter
+	 * than RT_PACKET_MAX); bits outside `active` in the result are
+	 * ignored.  NULL: intersect, ray by ray. */
 	uint32_t (*intersect_packet)(const struct shape *s, const struct ray *r, uint32_t active,
 				     const double *t_min, double *t_max);
 };
@@ -101,8 +103,10 @@ static inline uint32_t shape_intersect_packet(const struct shape *s, const struc
 	uint32_t hit = 0;
 	int i;
 
+	/* A method's stray bits would give other rays hits they do not have
+	 * (and index past the caller's arrays). */
 	if (s->ops->intersect_packet)
-		return s->ops->intersect_packet(s, r, active, t_min, t_max);
+		return s->ops->intersect_packet(s, r, active, t_min, t_max) & active;
 	for (i = 0; i < RT_PACKET_MAX && active >> i; i++)
 		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
 			hit |= (uint32_t)1 << i;

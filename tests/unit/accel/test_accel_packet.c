@@ -420,6 +420,67 @@ static void test_packet_default_method_full_mask(void **state)
 	shape_destroy(sh);
 }
 
+/* A packet method that answers for rays it was not asked about (every
+ * bit set) must not reach them: the host keeps only the active bits, so
+ * no ray outside the mask is hit and nothing is written past the
+ * packet's arrays (the sanitizer build would see it). */
+static uint32_t stray_intersect_packet(const struct shape *s, const struct ray *r,
+				       uint32_t active, const double *t_min, double *t_max)
+{
+	(void)s;
+	(void)r;
+	(void)active;
+	(void)t_min;
+	(void)t_max;
+	return ~(uint32_t)0;
+}
+
+static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
+{
+	struct scene *s = scene_create("stray bits");
+	struct shape_ops ops;
+	struct ray r[ACCEL_PACKET];
+	double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+	const struct shape *hit[ACCEL_PACKET];
+	struct diag d;
+	struct shape *bad = NULL;
+	int i, k;
+
+	(void)state;
+	rng_seed(31);
+	for (i = 0; i < 300; i++) {
+		struct shape *sh = sphere_create(random_point(40), uniform(0.5, 4), &mat);
+		assert_non_null(sh);
+		if (i == 0) {
+			ops = *sh->ops;
+			ops.intersect_packet = stray_intersect_packet;
+			sh->ops = &ops;
+			bad = sh;
+		}
+		add(s, sh);
+	}
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (i = 0; i < ACCEL_PACKET; i++) {
+		r[i].origin = vec3_make(0, -200, 0);
+		r[i].dir = vec3_make(0, 1, 0);
+		t_min[i] = 1e-6;
+		t_max[i] = INFINITY;
+	}
+	assert_int_equal(shape_intersect_packet(bad, r, 0x5, t_min, t_max), 0x5);
+	/* One ray at a time through the whole scene: the stray bits would
+	 * name rays 1 to 31 of a one-ray packet. */
+	for (k = 0; k < 300; k++) {
+		struct ray one = { random_point(60), vec3_normalize(random_point(1)) };
+		double lo = 1e-6, hi = INFINITY;
+
+		hit[0] = NULL;
+		accel_intersect_packet(s->accel, &one, 1, &lo, &hi, hit);
+		assert_true(hit[0] == NULL || hit[0]->ops != NULL);
+		(void)accel_occluded_packet(s->accel, &one, 1, &lo, &hi);
+	}
+	scene_destroy(s);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -428,6 +489,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
 		cmocka_unit_test(test_packet_unbounded_and_empty),
 		cmocka_unit_test(test_packet_shape_packet_method),
+		cmocka_unit_test(test_packet_stray_bits_of_a_method_are_dropped),
 		cmocka_unit_test(test_packet_default_method_full_mask),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
