@@ -155,7 +155,7 @@ viewer_check() {
 	mkdir -p "$T/vs" "$T/vb"
 	printf '1\n64\n1\nsphere\n0 0 10\n50\n0.1 0.9 0.2\n0.4 0.5 0.2 0\n10\n1\n0 -200 100\n1 1 1\n' >"$T/vs/one.txt"
 	to_balls "$T/vs/one.txt" >"$T/vb/one.txt"
-	Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$T/display" 2>"$T/xvfb.log" &
+	Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp -noreset 3>"$T/display" 2>"$T/xvfb.log" &
 	xvfb_pid=$!
 	for n in $(seq 100); do [ -s "$T/display" ] && break; sleep 0.1; done
 	if [ ! -s "$T/display" ]; then

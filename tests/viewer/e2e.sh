@@ -64,7 +64,10 @@ cd "$tmp" || exit 1
 
 # A display of our own: -displayfd picks a free number and writes it once
 # the server is ready.
-Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
+# -noreset: without it the server resets whenever its last client leaves
+# (each viewer that quits, each xdotool call), and a client that connects
+# during the reset is refused.
+Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp -noreset 3>"$tmp/display" 2>"$tmp/xvfb.log" &
 xvfb_pid=$!
 if ! wait_for 100 '[ -s "$tmp/display" ]'; then
 	bad "Xvfb started (log: $(cat "$tmp/xvfb.log"))"
@@ -84,14 +87,28 @@ fi
 start_viewer() {
 	title=$1
 	shift
-	: >stdout.txt
-	"$viewer" "$@" >stdout.txt 2>stderr.txt &
-	viewer_pid=$!
-	win=""
-	if ! wait_for 200 find_window; then
-		bad "a window titled '$title' opened (stderr: $(cat stderr.txt); Xvfb: $(cat "$tmp/xvfb.log"))"
+	tries=3
+	while :; do
+		: >stdout.txt
+		"$viewer" "$@" >stdout.txt 2>stderr.txt &
+		viewer_pid=$!
+		win=""
+		wait_for 200 find_window && break
+		# A refused connection is the display's doing, not the viewer's:
+		# try again while the server is up, and say so.
+		tries=$((tries - 1))
+		if [ "$tries" -gt 0 ] && grep -q "failed to open display" stderr.txt &&
+			kill -0 "$xvfb_pid" 2>/dev/null && xdotool getmouselocation >/dev/null 2>&1; then
+			echo "  note: the viewer could not open $DISPLAY ($(cat stderr.txt | tail -n 1)); trying again"
+			kill "$viewer_pid" 2>/dev/null
+			wait "$viewer_pid" 2>/dev/null
+			continue
+		fi
+		alive=no
+		kill -0 "$xvfb_pid" 2>/dev/null && alive=yes
+		bad "a window titled '$title' opened (stderr: $(cat stderr.txt); Xvfb running: $alive; Xvfb: $(cat "$tmp/xvfb.log"))"
 		finish
-	fi
+	done
 	ok "window '$(xdotool getwindowname "$win")' opened"
 	# Without a window manager GLUT's window sits at -1,-1, its first row
 	# and column off the screen: move it to the corner for the screenshot.
