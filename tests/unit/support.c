@@ -101,3 +101,39 @@ int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
 	free(chosen);
 	return rc;
 }
+
+static uint64_t support_rng_state;
+
+void support_rng_seed(uint64_t seed)
+{
+	support_rng_state = seed * 0x9e3779b97f4a7c15u + 1;
+}
+
+double support_rng(void)
+{
+	support_rng_state ^= support_rng_state >> 12;
+	support_rng_state ^= support_rng_state << 25;
+	support_rng_state ^= support_rng_state >> 27;
+	return (double)((support_rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
+}
+
+double support_uniform(double lo, double hi)
+{
+	return lo + (hi - lo) * support_rng();
+}
+
+struct vec3 support_random_point(double half)
+{
+	return vec3_make(support_uniform(-half, half), support_uniform(-half, half),
+			 support_uniform(-half, half));
+}
+
+struct vec3 support_random_direction(void)
+{
+	for (;;) {
+		struct vec3 v = support_random_point(1.0);
+		double len = vec3_length(v);
+		if (len > 0.1 && len <= 1.0)
+			return vec3_scale(v, 1.0 / len);
+	}
+}

@@ -39,6 +39,14 @@ struct scene *support_parse(const char *text);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
 
+/* A seeded random stream for the randomised tests (xorshift64*): the
+ * same numbers for the same seed in every test program. */
+void support_rng_seed(uint64_t seed);
+double support_rng(void);			/* uniform in [0, 1) */
+double support_uniform(double lo, double hi);
+struct vec3 support_random_point(double half);	/* in the cube [-half, half]^3 */
+struct vec3 support_random_direction(void);	/* a unit vector */
+
 /* Runs the tests whose names contain argv[1] (all without it). */
 int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
 		int argc, char **argv);

@@ -12,42 +12,6 @@
 #include "shapes/solve.h"
 #include "support.h"
 
-static uint64_t rng_state;
-
-static void rng_seed(uint64_t seed)
-{
-	rng_state = seed * 0x9e3779b97f4a7c15u + 1;
-}
-
-/* xorshift64*: uniform in [0, 1). */
-static double rng(void)
-{
-	rng_state ^= rng_state >> 12;
-	rng_state ^= rng_state << 25;
-	rng_state ^= rng_state >> 27;
-	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
-}
-
-static double uniform(double lo, double hi)
-{
-	return lo + (hi - lo) * rng();
-}
-
-static struct vec3 random_point(double half)
-{
-	return vec3_make(uniform(-half, half), uniform(-half, half), uniform(-half, half));
-}
-
-static struct vec3 random_direction(void)
-{
-	for (;;) {
-		struct vec3 v = random_point(1.0);
-		double len = vec3_length(v);
-		if (len > 0.1 && len <= 1.0)
-			return vec3_scale(v, 1.0 / len);
-	}
-}
-
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
 static void add(struct scene *s, struct shape *sh)
@@ -61,26 +25,26 @@ static void add(struct scene *s, struct shape *sh)
 /* A random primitive near centre c with size about `size`. */
 static void add_random_shape(struct scene *s, struct vec3 c, double size)
 {
-	double kind = rng();
+	double kind = support_rng();
 
 	if (kind < 0.35) {
-		add(s, sphere_create(c, uniform(0.05, 1.0) * size, &mat));
+		add(s, sphere_create(c, support_uniform(0.05, 1.0) * size, &mat));
 	} else if (kind < 0.7) {
-		add(s, triangle_create(vec3_add(c, random_point(size)), vec3_add(c, random_point(size)),
-				       vec3_add(c, random_point(size)), &mat));
+		add(s, triangle_create(vec3_add(c, support_random_point(size)), vec3_add(c, support_random_point(size)),
+				       vec3_add(c, support_random_point(size)), &mat));
 	} else {
 		/* An ellipsoid, hyperboloid or cylinder around c:
 		 * a (x-cx)^2 + b (y-cy)^2 + e (z-cz)^2 = r^2 expanded. */
-		double a = uniform(0.2, 1.0), b = uniform(0.2, 1.0);
-		double e = rng() < 0.3 ? 0.0 : rng() < 0.5 ? -uniform(0.2, 1.0) : uniform(0.2, 1.0);
-		double r = uniform(0.2, 1.0) * size;
+		double a = support_uniform(0.2, 1.0), b = support_uniform(0.2, 1.0);
+		double e = support_rng() < 0.3 ? 0.0 : support_rng() < 0.5 ? -support_uniform(0.2, 1.0) : support_uniform(0.2, 1.0);
+		double r = support_uniform(0.2, 1.0) * size;
 		double coef[10] = {
 			a, b, e, 0, 0, 0, -2 * a * c.x, -2 * b * c.y, -2 * e * c.z,
 			a * c.x * c.x + b * c.y * c.y + e * c.z * c.z - r * r,
 		};
-		struct vec3 ext = vec3_make(uniform(0.5, 2) * size, uniform(0.5, 2) * size,
-					    uniform(0.5, 2) * size);
-		double clip = rng();
+		struct vec3 ext = vec3_make(support_uniform(0.5, 2) * size, support_uniform(0.5, 2) * size,
+					    support_uniform(0.5, 2) * size);
+		double clip = support_rng();
 
 		/* Clipped on all three axes (bounded), on some, or not at all. */
 		if (clip < 0.5) {
@@ -128,30 +92,30 @@ static int compare_rays(const struct scene *s, int n, double half)
 
 	for (i = 0; i < n; i++) {
 		struct ray r;
-		double t_min = rng() < 0.5 ? 1e-6 : uniform(0, half);
-		double t_max = rng() < 0.5 ? INFINITY : uniform(t_min, 4 * half);
+		double t_min = support_rng() < 0.5 ? 1e-6 : support_uniform(0, half);
+		double t_max = support_rng() < 0.5 ? INFINITY : support_uniform(t_min, 4 * half);
 		double ta = t_max, tb = t_max;
 		const struct shape *a, *b;
 
-		r.origin = random_point(1.5 * half);
-		if (rng() < 0.5 && s->n_shapes > 0) {
+		r.origin = support_random_point(1.5 * half);
+		if (support_rng() < 0.5 && s->n_shapes > 0) {
 			/* Aim at a random shape's box (or the origin). */
 			struct aabb box;
-			const struct shape *target = s->shapes[(size_t)(rng() * (double)s->n_shapes)];
+			const struct shape *target = s->shapes[(size_t)(support_rng() * (double)s->n_shapes)];
 			struct vec3 aim = shape_bounds(target, &box) ? aabb_centre(box) : vec3_make(0, 0, 0);
-			r.dir = vec3_normalize(vec3_sub(vec3_add(aim, random_point(0.1)), r.origin));
+			r.dir = vec3_normalize(vec3_sub(vec3_add(aim, support_random_point(0.1)), r.origin));
 			if (vec3_length(r.dir) == 0.0)
-				r.dir = random_direction();
+				r.dir = support_random_direction();
 		} else {
-			r.dir = random_direction();
+			r.dir = support_random_direction();
 		}
-		if (rng() < 0.1)
-			r.dir = vec3_scale(r.dir, uniform(0.1, 10));	/* not unit */
-		if (rng() < 0.05) {
+		if (support_rng() < 0.1)
+			r.dir = vec3_scale(r.dir, support_uniform(0.1, 10));	/* not unit */
+		if (support_rng() < 0.05) {
 			/* Along an axis: zero components in the slab test. */
-			int axis = (int)(rng() * 3);
+			int axis = (int)(support_rng() * 3);
 			r.dir = vec3_make(axis == 0, axis == 1, axis == 2);
-			if (rng() < 0.5)
+			if (support_rng() < 0.5)
 				r.dir = vec3_neg(r.dir);
 		}
 		a = accel_intersect(s->accel, &r, t_min, &ta);
@@ -187,10 +151,10 @@ static void test_accel_random_scenes_match_brute_force(void **state)
 		double half = 50;
 		struct diag d;
 
-		rng_seed((uint64_t)scene_no + 1);
+		support_rng_seed((uint64_t)scene_no + 1);
 		assert_non_null(s);
 		for (i = 0; i < n; i++)
-			add_random_shape(s, random_point(half), uniform(0.5, 10));
+			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
 		if (scene_no % 2 == 0)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 		assert_int_equal(scene_prepare(s, 1, &d), 0);
@@ -221,33 +185,33 @@ static void test_accel_avx2_walks_match_sse2(void **state)
 		struct accel *a;
 		struct diag d;
 
-		rng_seed((uint64_t)scene_no + 101);
+		support_rng_seed((uint64_t)scene_no + 101);
 		assert_non_null(s);
 		for (i = 0; i < n; i++)
-			add_random_shape(s, random_point(half), uniform(0.5, 10));
+			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
 		if (scene_no % 2 == 1)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 		assert_int_equal(scene_prepare(s, 1, &d), 0);
 		a = s->accel;
 		for (i = 0; i < 4000; i++) {
 			struct ray r;
-			double t_min = rng() < 0.5 ? 1e-6 : uniform(0, half);
-			double t_max = rng() < 0.5 ? INFINITY : uniform(t_min, 4 * half);
+			double t_min = support_rng() < 0.5 ? 1e-6 : support_uniform(0, half);
+			double t_max = support_rng() < 0.5 ? INFINITY : support_uniform(t_min, 4 * half);
 			double ta = t_max, tb = t_max;
 			const struct shape *sa, *sb;
 
-			r.origin = random_point(1.5 * half);
-			r.dir = random_direction();
-			if (rng() < 0.5) {
+			r.origin = support_random_point(1.5 * half);
+			r.dir = support_random_direction();
+			if (support_rng() < 0.5) {
 				struct aabb box;
-				const struct shape *target = s->shapes[(size_t)(rng() * (double)s->n_shapes)];
+				const struct shape *target = s->shapes[(size_t)(support_rng() * (double)s->n_shapes)];
 				if (shape_bounds(target, &box))
 					r.dir = vec3_sub(aabb_centre(box), r.origin);
 				if (vec3_length(r.dir) == 0.0)
-					r.dir = random_direction();
+					r.dir = support_random_direction();
 			}
-			if (rng() < 0.1) {
-				int axis = (int)(rng() * 3);
+			if (support_rng() < 0.1) {
+				int axis = (int)(support_rng() * 3);
 				r.dir = vec3_make(axis == 0, axis == 1, -(double)(axis == 2));
 			}
 			a->walk_avx2 = false;
@@ -269,7 +233,7 @@ static void test_accel_all_shapes_at_one_centre(void **state)
 	int i;
 
 	(void)state;
-	rng_seed(99);
+	support_rng_seed(99);
 	/* Spheres of different radii, and triangles and clipped quadrics
 	 * whose boxes share the centre: no split by centres is possible. */
 	for (i = 0; i < 200; i++) {
@@ -277,7 +241,7 @@ static void test_accel_all_shapes_at_one_centre(void **state)
 		add(s, sphere_create(vec3_make(3, 3, 3), r, &mat));
 	}
 	for (i = 0; i < 100; i++) {
-		struct vec3 a = random_point(5);
+		struct vec3 a = support_random_point(5);
 		add(s, triangle_create(vec3_add(vec3_make(3, 3, 3), a), vec3_sub(vec3_make(3, 3, 3), a),
 				       vec3_add(vec3_make(3, 3, 3), vec3_cross(a, vec3_make(0, 0, 1))), &mat));
 	}
@@ -308,7 +272,7 @@ static void test_accel_one_shape(void **state)
 	t = INFINITY;
 	assert_null(accel_intersect(s->accel, &r, 0, &t));
 	assert_true(isinf(t));
-	rng_seed(7);
+	support_rng_seed(7);
 	compare_rays(s, 2000, 5);
 	scene_destroy(s);
 }
@@ -351,9 +315,9 @@ static void test_accel_many_shapes(void **state)
 	int i;
 
 	(void)state;
-	rng_seed(10000);
+	support_rng_seed(10000);
 	for (i = 0; i < 10000; i++)
-		add_random_shape(s, random_point(200), uniform(0.2, 3));
+		add_random_shape(s, support_random_point(200), support_uniform(0.2, 3));
 	assert_int_equal(scene_add_floor(s, 300, 10, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	assert_true(accel_node_count(s->accel) > 1000);
@@ -375,7 +339,7 @@ static void test_accel_many_at_one_point(void **state)
 	for (i = 0; i < 10000; i++)
 		add(s, sphere_create(vec3_make(1, 2, 3), 0.5, &mat));
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	rng_seed(3);
+	support_rng_seed(3);
 	compare_rays(s, 500, 4);
 	scene_destroy(s);
 }
@@ -417,11 +381,11 @@ static void test_accel_threads_build_the_same_tree(void **state)
 	int i;
 
 	(void)state;
-	rng_seed(77);
+	support_rng_seed(77);
 	/* Big enough that the top nodes' halves (4096 refs and more) go to
 	 * other threads; the floor is split off first, as in a real scene. */
 	for (i = 0; i < 40000; i++)
-		add_random_shape(s, random_point(300), uniform(0.2, 3));
+		add_random_shape(s, support_random_point(300), support_uniform(0.2, 3));
 	assert_int_equal(scene_add_floor(s, 1000, 20, &d), 0);
 	assert_same_tree_for_threads(s);
 	/* Every index below n_nodes is a node of the tree: the unused ones
@@ -446,7 +410,7 @@ static void test_accel_threads_median_splits(void **state)
 	for (i = 0; i < 20000; i++)
 		add(s, sphere_create(vec3_make(-1, 2, 5), 0.5, &mat));
 	assert_same_tree_for_threads(s);
-	rng_seed(4);
+	support_rng_seed(4);
 	compare_rays(s, 300, 6);
 	scene_destroy(s);
 }

@@ -13,42 +13,6 @@
 #include "accel/accel_tree.h"
 #include "support.h"
 
-static uint64_t rng_state;
-
-static void rng_seed(uint64_t seed)
-{
-	rng_state = seed * 0x9e3779b97f4a7c15u + 1;
-}
-
-/* xorshift64*: uniform in [0, 1). */
-static double rng(void)
-{
-	rng_state ^= rng_state >> 12;
-	rng_state ^= rng_state << 25;
-	rng_state ^= rng_state >> 27;
-	return (double)((rng_state * 0x2545f4914f6cdd1du) >> 11) / 9007199254740992.0;
-}
-
-static double uniform(double lo, double hi)
-{
-	return lo + (hi - lo) * rng();
-}
-
-static struct vec3 random_point(double half)
-{
-	return vec3_make(uniform(-half, half), uniform(-half, half), uniform(-half, half));
-}
-
-static struct vec3 random_direction(void)
-{
-	for (;;) {
-		struct vec3 v = random_point(1.0);
-		double len = vec3_length(v);
-		if (len > 0.1 && len <= 1.0)
-			return vec3_scale(v, 1.0 / len);
-	}
-}
-
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
 static void add(struct scene *s, struct shape *sh)
@@ -63,25 +27,25 @@ static void add(struct scene *s, struct shape *sh)
  * cube, pyramid or a quadric clipped on some axes or none. */
 static void add_random_shape(struct scene *s, struct vec3 c, double size)
 {
-	double kind = rng();
+	double kind = support_rng();
 
 	if (kind < 0.3) {
-		add(s, sphere_create(c, uniform(0.05, 1.0) * size, &mat));
+		add(s, sphere_create(c, support_uniform(0.05, 1.0) * size, &mat));
 	} else if (kind < 0.6) {
-		add(s, triangle_create(vec3_add(c, random_point(size)), vec3_add(c, random_point(size)),
-				       vec3_add(c, random_point(size)), &mat));
+		add(s, triangle_create(vec3_add(c, support_random_point(size)), vec3_add(c, support_random_point(size)),
+				       vec3_add(c, support_random_point(size)), &mat));
 	} else if (kind < 0.7) {
-		add(s, cube_create(c, uniform(0.1, 1.0) * size, &mat));
+		add(s, cube_create(c, support_uniform(0.1, 1.0) * size, &mat));
 	} else if (kind < 0.8) {
-		add(s, pyramid_create(c, uniform(0.1, 1.0) * size, uniform(0.1, 1.0) * size, &mat));
+		add(s, pyramid_create(c, support_uniform(0.1, 1.0) * size, support_uniform(0.1, 1.0) * size, &mat));
 	} else {
-		double a = uniform(0.2, 1.0), b = uniform(0.2, 1.0), e = uniform(-1.0, 1.0);
-		double r = uniform(0.2, 1.0) * size;
+		double a = support_uniform(0.2, 1.0), b = support_uniform(0.2, 1.0), e = support_uniform(-1.0, 1.0);
+		double r = support_uniform(0.2, 1.0) * size;
 		double coef[10] = {
 			a, b, e, 0, 0, 0, -2 * a * c.x, -2 * b * c.y, -2 * e * c.z,
 			a * c.x * c.x + b * c.y * c.y + e * c.z * c.z - r * r,
 		};
-		struct vec3 ext = vec3_make(uniform(0.5, 2) * size, rng() < 0.3 ? 0 : size, size);
+		struct vec3 ext = vec3_make(support_uniform(0.5, 2) * size, support_rng() < 0.3 ? 0 : size, size);
 
 		add(s, quadric_create(coef, vec3_sub(c, vec3_scale(ext, 0.5)), ext, &mat));
 	}
@@ -139,21 +103,21 @@ static void check_packet(struct accel *a, const struct ray *r, int n, const doub
  * axes, either way, some components -0. */
 static int random_packet(int kind, double half, struct ray *r, double *t_min, double *t_max)
 {
-	int n = rng() < 0.7 ? ACCEL_PACKET : 1 + (int)(rng() * ACCEL_PACKET), i;
-	struct vec3 o = random_point(1.5 * half), aim = random_point(half);
-	struct vec3 other = random_point(half);
+	int n = support_rng() < 0.7 ? ACCEL_PACKET : 1 + (int)(support_rng() * ACCEL_PACKET), i;
+	struct vec3 o = support_random_point(1.5 * half), aim = support_random_point(half);
+	struct vec3 other = support_random_point(half);
 	double spread = kind == 1 ? half : 0.02 * half;
-	bool open = rng() < 0.5;
+	bool open = support_rng() < 0.5;
 
 	for (i = 0; i < n; i++) {
 		switch (kind) {
 		case 0:
 		case 1:
 			r[i].origin = o;
-			r[i].dir = vec3_normalize(vec3_sub(vec3_add(aim, random_point(spread)), o));
+			r[i].dir = vec3_normalize(vec3_sub(vec3_add(aim, support_random_point(spread)), o));
 			break;
 		case 2:
-			r[i].origin = vec3_add(aim, random_point(spread));
+			r[i].origin = vec3_add(aim, support_random_point(spread));
 			r[i].dir = vec3_sub(o, r[i].origin);
 			break;
 		case 3:
@@ -161,21 +125,21 @@ static int random_packet(int kind, double half, struct ray *r, double *t_min, do
 			r[i].dir = vec3_sub(i % 2 ? aim : other, o);
 			break;
 		case 4:
-			r[i].origin = random_point(1.5 * half);
-			r[i].dir = random_direction();
+			r[i].origin = support_random_point(1.5 * half);
+			r[i].dir = support_random_direction();
 			break;
 		default: {
-			int axis = (int)(rng() * 3);
-			double sign = rng() < 0.5 ? -1.0 : 1.0;
-			r[i].origin = vec3_add(o, random_point(0.1 * half));
-			r[i].dir = vec3_make(axis == 0 ? sign : -0.0 * (rng() < 0.5),
+			int axis = (int)(support_rng() * 3);
+			double sign = support_rng() < 0.5 ? -1.0 : 1.0;
+			r[i].origin = vec3_add(o, support_random_point(0.1 * half));
+			r[i].dir = vec3_make(axis == 0 ? sign : -0.0 * (support_rng() < 0.5),
 					     axis == 1 ? sign : 0.0, axis == 2 ? sign : -0.0);
 		}
 		}
 		if (vec3_length(r[i].dir) == 0.0)
-			r[i].dir = random_direction();
-		t_min[i] = kind == 2 ? 1e-6 : open ? 1e-6 : uniform(0, half);
-		t_max[i] = kind == 2 ? 1.0 : open ? INFINITY : uniform(t_min[i], 4 * half);
+			r[i].dir = support_random_direction();
+		t_min[i] = kind == 2 ? 1e-6 : open ? 1e-6 : support_uniform(0, half);
+		t_max[i] = kind == 2 ? 1.0 : open ? INFINITY : support_uniform(t_min[i], 4 * half);
 	}
 	return n;
 }
@@ -191,10 +155,10 @@ static void test_packet_random_scenes_match_single_rays(void **state)
 		double half = 50;
 		struct diag d;
 
-		rng_seed((uint64_t)scene_no + 7);
+		support_rng_seed((uint64_t)scene_no + 7);
 		assert_non_null(s);
 		for (i = 0; i < n; i++)
-			add_random_shape(s, random_point(half), uniform(0.5, 10));
+			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
 		if (scene_no % 3 == 0)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 		assert_int_equal(scene_prepare(s, 1, &d), 0);
@@ -219,10 +183,10 @@ static void test_packet_ties_keep_the_single_walks_shape(void **state)
 	int i, j, k;
 
 	(void)state;
-	rng_seed(99);
+	support_rng_seed(99);
 	for (i = 0; i < 30; i++) {
-		struct vec3 c = random_point(20), a = random_point(3), b = random_point(3);
-		double size = uniform(0.5, 3);
+		struct vec3 c = support_random_point(20), a = support_random_point(3), b = support_random_point(3);
+		double size = support_uniform(0.5, 3);
 		int kind = i % 3;
 		for (j = 0; j < 8; j++) {
 			if (kind == 0)
@@ -254,38 +218,38 @@ static void test_packet_rays_along_faces_and_edges(void **state)
 	int x, y, z, k;
 
 	(void)state;
-	rng_seed(5);
+	support_rng_seed(5);
 	for (x = 0; x < 6; x++)
 		for (y = 0; y < 6; y++)
 			for (z = 0; z < 6; z++)
-				if (rng() < 0.6)
+				if (support_rng() < 0.6)
 					add(s, cube_create(vec3_make(x, y, z), 1.0, &mat));
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	for (k = 0; k < 3000; k++) {
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
-		int n = 1 + (int)(rng() * ACCEL_PACKET), i;
-		struct vec3 o = vec3_make(floor(uniform(-2, 8)), floor(uniform(-2, 8)),
-					  floor(uniform(-2, 8)));
+		int n = 1 + (int)(support_rng() * ACCEL_PACKET), i;
+		struct vec3 o = vec3_make(floor(support_uniform(-2, 8)), floor(support_uniform(-2, 8)),
+					  floor(support_uniform(-2, 8)));
 
 		for (i = 0; i < n; i++) {
 			double c[3];
 			int j;
 			/* Each component of the direction -1, -0, 0 or 1. */
 			for (j = 0; j < 3; j++) {
-				double u = rng();
+				double u = support_rng();
 				c[j] = u < 0.3 ? -1.0 : u < 0.45 ? -0.0 : u < 0.7 ? 0.0 : 1.0;
 			}
 			if (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0)
-				c[(int)(rng() * 3)] = 1.0;
+				c[(int)(support_rng() * 3)] = 1.0;
 			r[i].dir = vec3_make(c[0], c[1], c[2]);
 			r[i].origin = o;
-			if (rng() < 0.5)
-				r[i].origin = vec3_add(o, vec3_make(0.5 * (int)(rng() * 3),
-								    0.5 * (int)(rng() * 3),
-								    0.5 * (int)(rng() * 3)));
+			if (support_rng() < 0.5)
+				r[i].origin = vec3_add(o, vec3_make(0.5 * (int)(support_rng() * 3),
+								    0.5 * (int)(support_rng() * 3),
+								    0.5 * (int)(support_rng() * 3)));
 			t_min[i] = 1e-9;
-			t_max[i] = rng() < 0.7 ? INFINITY : floor(uniform(1, 8));
+			t_max[i] = support_rng() < 0.7 ? INFINITY : floor(support_uniform(1, 8));
 		}
 		check_packet(s->accel, r, n, t_min, t_max);
 	}
@@ -302,7 +266,7 @@ static void test_packet_unbounded_and_empty(void **state)
 	int k;
 
 	(void)state;
-	rng_seed(3);
+	support_rng_seed(3);
 	assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	for (k = 0; k < 200; k++) {
@@ -344,9 +308,9 @@ static void test_packet_shape_packet_method(void **state)
 	int i, k, before;
 
 	(void)state;
-	rng_seed(11);
+	support_rng_seed(11);
 	for (i = 0; i < 200; i++) {
-		struct shape *sh = sphere_create(random_point(40), uniform(0.5, 4), &mat);
+		struct shape *sh = sphere_create(support_random_point(40), support_uniform(0.5, 4), &mat);
 		assert_non_null(sh);
 		if (i == 0) {
 			ops = *sh->ops;
@@ -371,7 +335,7 @@ static void test_packet_shape_packet_method(void **state)
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET], ta[ACCEL_PACKET], tb[ACCEL_PACKET];
 		struct shape *sh = s->shapes[k % s->n_shapes];
 		int n = random_packet(k % 5, 40, r, t_min, t_max);
-		uint32_t mask = (uint32_t)(rng() * 65536.0) & (((uint32_t)1 << n) - 1), ma, mb;
+		uint32_t mask = (uint32_t)(support_rng() * 65536.0) & (((uint32_t)1 << n) - 1), ma, mb;
 		struct shape_ops plain = ops;
 
 		plain.intersect_packet = NULL;
@@ -401,9 +365,9 @@ static void test_packet_default_method_full_mask(void **state)
 	(void)state;
 	assert_non_null(sh);
 	assert_null(sh->ops->intersect_packet);
-	rng_seed(21);
+	support_rng_seed(21);
 	for (i = 0; i < RT_PACKET_MAX; i++) {
-		r[i].origin = vec3_make(uniform(-8, 8), -20, uniform(-8, 8));
+		r[i].origin = vec3_make(support_uniform(-8, 8), -20, support_uniform(-8, 8));
 		r[i].dir = vec3_make(0, 1, 0);
 		t_min[i] = 1e-6;
 		t[i] = INFINITY;
@@ -447,9 +411,9 @@ static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
 	int i, k;
 
 	(void)state;
-	rng_seed(31);
+	support_rng_seed(31);
 	for (i = 0; i < 300; i++) {
-		struct shape *sh = sphere_create(random_point(40), uniform(0.5, 4), &mat);
+		struct shape *sh = sphere_create(support_random_point(40), support_uniform(0.5, 4), &mat);
 		assert_non_null(sh);
 		if (i == 0) {
 			ops = *sh->ops;
@@ -470,7 +434,7 @@ static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
 	/* One ray at a time through the whole scene: the stray bits would
 	 * name rays 1 to 31 of a one-ray packet. */
 	for (k = 0; k < 300; k++) {
-		struct ray one = { random_point(60), vec3_normalize(random_point(1)) };
+		struct ray one = { support_random_point(60), vec3_normalize(support_random_point(1)) };
 		double lo = 1e-6, hi = INFINITY;
 
 		hit[0] = NULL;

@@ -3,8 +3,9 @@
  * enumerations and macros it compiles in, for the current
  * WHITTED_PLUGIN_ABI.  Any change of them breaks plugins built before it,
  * which the host would still load if the version stayed: so a mismatch
- * here means "bump WHITTED_PLUGIN_ABI", then pin the new layout in a new
- * table.  The numbers are worked out by hand from the declarations for
+ * here means "bump WHITTED_PLUGIN_ABI", then pin the new layout in the
+ * new version's table (only the current version's is checked, so the old
+ * one goes).  The numbers are worked out by hand from the declarations for
  * LP64 (8-byte pointers, size_t and double, 4-byte int and unsigned, each
  * member aligned to its size), not read from the compiler. */
 #include <stddef.h>
@@ -26,78 +27,8 @@ struct abi_pin {
 #define PIN_AT(type, member, n) { "offsetof(" #type ", " #member ")", offsetof(type, member), n }
 #define PIN_VALUE(expr, n) { #expr, (size_t)(expr), n }
 
-/* ABI 2 on LP64. */
-static const struct abi_pin abi_2[] = {
-	PIN_SIZE(struct vec3, 24),
-	PIN_AT(struct vec3, x, 0), PIN_AT(struct vec3, y, 8), PIN_AT(struct vec3, z, 16),
-	PIN_SIZE(struct color, 24),
-	PIN_AT(struct color, r, 0), PIN_AT(struct color, g, 8), PIN_AT(struct color, b, 16),
-	PIN_SIZE(struct ray, 48),
-	PIN_AT(struct ray, origin, 0), PIN_AT(struct ray, dir, 24),
-	PIN_SIZE(struct aabb, 48),
-	PIN_AT(struct aabb, min, 0), PIN_AT(struct aabb, max, 24),
-	PIN_SIZE(struct material, 80),
-	PIN_AT(struct material, color, 0), PIN_AT(struct material, ka, 24),
-	PIN_AT(struct material, kd, 32), PIN_AT(struct material, ks, 40),
-	PIN_AT(struct material, kr, 48), PIN_AT(struct material, shininess, 56),
-	PIN_AT(struct material, kt, 64), PIN_AT(struct material, ior, 72),
-	PIN_SIZE(struct shape, 88),
-	PIN_AT(struct shape, ops, 0), PIN_AT(struct shape, mat, 8),
-	PIN_SIZE(struct shape_ops, 104),
-	PIN_AT(struct shape_ops, keyword, 0), PIN_AT(struct shape_ops, dialects, 8),
-	PIN_AT(struct shape_ops, parse, 16), PIN_AT(struct shape_ops, intersect, 24),
-	PIN_AT(struct shape_ops, normal, 32), PIN_AT(struct shape_ops, export_pov, 40),
-	PIN_AT(struct shape_ops, destroy, 48), PIN_AT(struct shape_ops, color_at, 56),
-	PIN_AT(struct shape_ops, bounds, 64), PIN_AT(struct shape_ops, degenerate, 72),
-	PIN_AT(struct shape_ops, tessellate, 80),
-	PIN_AT(struct shape_ops, specular_color_at, 88), PIN_AT(struct shape_ops, closed, 96),
-	PIN_SIZE(struct pov_options, 24),
-	PIN_AT(struct pov_options, finish, 0), PIN_AT(struct pov_options, shadow_twin, 4),
-	PIN_AT(struct pov_options, floor_texture, 8),
-	PIN_SIZE(struct mesh_texture, 8 + 1024 * 24),
-	PIN_AT(struct mesh_texture, width, 0), PIN_AT(struct mesh_texture, height, 4),
-	PIN_AT(struct mesh_texture, texels, 8),
-	PIN_SIZE(struct mesh, 24 + 8 + 1024 * 24),
-	PIN_AT(struct mesh, data, 0), PIN_AT(struct mesh, n_vertices, 8),
-	PIN_AT(struct mesh, cap_vertices, 16), PIN_AT(struct mesh, texture, 24),
-	PIN_SIZE(struct mesh_uv, 16),
-	PIN_AT(struct mesh_uv, u, 0), PIN_AT(struct mesh_uv, v, 8),
-	PIN_SIZE(struct mesh_options, 56),
-	PIN_AT(struct mesh_options, around, 0), PIN_AT(struct mesh_options, segments, 48),
-	PIN_VALUE(RT_MESH_TEXELS_MAX, 1024),
-	PIN_VALUE(RT_MESH_FLOATS_PER_VERTEX, 8),
-	PIN_SIZE(struct whitted_plugin, 24),
-	PIN_AT(struct whitted_plugin, name, 0), PIN_AT(struct whitted_plugin, version, 8),
-	PIN_AT(struct whitted_plugin, shapes, 16),
-	PIN_SIZE(struct whitted_plugin_host, 144),
-	PIN_AT(struct whitted_plugin_host, abi, 0), PIN_AT(struct whitted_plugin_host, size, 8),
-	PIN_AT(struct whitted_plugin_host, register_plugin, 16),
-	PIN_AT(struct whitted_plugin_host, number, 24),
-	PIN_AT(struct whitted_plugin_host, integer, 32),
-	PIN_AT(struct whitted_plugin_host, vec3, 40),
-	PIN_AT(struct whitted_plugin_host, color, 48),
-	PIN_AT(struct whitted_plugin_host, material, 56),
-	PIN_AT(struct whitted_plugin_host, fail, 64),
-	PIN_AT(struct whitted_plugin_host, alloc, 72),
-	PIN_AT(struct whitted_plugin_host, free, 80),
-	PIN_AT(struct whitted_plugin_host, pov_number, 88),
-	PIN_AT(struct whitted_plugin_host, pov_vector, 96),
-	PIN_AT(struct whitted_plugin_host, pov_texture, 104),
-	PIN_AT(struct whitted_plugin_host, mesh_triangle, 112),
-	PIN_AT(struct whitted_plugin_host, mesh_box, 120),
-	PIN_AT(struct whitted_plugin_host, solve_quadratic, 128),
-	PIN_AT(struct whitted_plugin_host, ray_triangle, 136),
-	PIN_VALUE(RT_OK, 0), PIN_VALUE(RT_E_SYNTAX, 1), PIN_VALUE(RT_E_RANGE, 2),
-	PIN_VALUE(RT_E_NOMEM, 3), PIN_VALUE(RT_E_IO, 4), PIN_VALUE(RT_E_INVALID, 5),
-	PIN_VALUE(RT_E_INTERRUPTED, 6),
-	PIN_VALUE(RT_DIALECT_AUTO, 0), PIN_VALUE(RT_DIALECT_CLASSIC, 1),
-	PIN_VALUE(RT_DIALECT_SPOT, 2), PIN_VALUE(RT_DIALECT_PYRAMID, 3),
-	PIN_VALUE(RT_DIALECT_NEARFAR, 4),
-	PIN_VALUE(RT_DIALECT_BIT(RT_DIALECT_CLASSIC), 2),
-	PIN_VALUE(RT_DIALECT_BIT(RT_DIALECT_NEARFAR), 16),
-};
-
-/* ABI 3 on LP64: ABI 2 and struct shape_ops' intersect_packet at its end. */
+/* ABI 3 on LP64 (ABI 2 was this without struct shape_ops'
+ * intersect_packet at its end). */
 static const struct abi_pin abi_3[] = {
 	PIN_SIZE(struct vec3, 24),
 	PIN_AT(struct vec3, x, 0), PIN_AT(struct vec3, y, 8), PIN_AT(struct vec3, z, 16),
@@ -175,7 +106,6 @@ static const struct {
 	const struct abi_pin *pins;
 	size_t n;
 } tables[] = {
-	{ 2, abi_2, sizeof(abi_2) / sizeof(abi_2[0]) },
 	{ 3, abi_3, sizeof(abi_3) / sizeof(abi_3[0]) },
 };
 
