@@ -1,9 +1,8 @@
-/* Queries on the bounding volume hierarchy (built by accel_build.c) and
- * the list of unbounded shapes that every ray tests.  Closest-hit
- * traversal enters the nearer child first, in the same order as a tree
- * with one box per node would, so equal-distance hits resolve alike;
- * shadow rays stop at the first blocker.  Nothing here allocates or locks
- * per ray. */
+/* Queries on the bounding volume hierarchy (built by accel_build.c and
+ * accel_collapse.c) and the list of unbounded shapes that every ray
+ * tests: the walks of accel_walk.h and accel_packet.h with SSE2 box tests
+ * (or plain C ones in the portable build), and the choice between them
+ * and the AVX2 ones.  Nothing here allocates or locks per ray. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -12,120 +11,128 @@
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
 
-/* The entry distances of the ray into a node's two child boxes within
- * (t_min, t_max), INFINITY for a child it misses:
- *   entry = max(t_min, (near_k - o_k) / d_k),  exit = min(t_max, (far_k - o_k) / d_k).
- * A NaN from 0 * inf (the origin on a slab plane of a parallel ray) fails
- * the comparisons and so constrains nothing; SSE2's max and min return
- * their second operand for a NaN, which is the same rule. */
+/* A node's four children are tested at once: child c is entered when
+ *   entry = max(t_min, (near_k - o_k) / d_k) <= exit = min(t_max, (far_k - o_k) / d_k)
+ * over the three axes k (the reciprocal multiplied, in double precision
+ * from the float bounds).  A NaN from 0 * inf (the origin on a slab plane
+ * of a parallel ray) fails the comparisons and so constrains nothing;
+ * SSE2's max and min return their second operand for a NaN, which is the
+ * same rule.  node_entries returns the mask of the children entered and
+ * their entries; node_hits only the mask.  Every build's arithmetic is
+ * the same, lane by lane, so each takes the same path through the tree. */
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
 #include <emmintrin.h>
 
-struct ray_slab_sse {
+struct walk_ray {
 	__m128d o[3], inv[3];
-	int near_off[3], far_off[3];	/* float offsets into bvh_node.bounds */
+	int near_off[3], far_off[3];	/* float offsets into struct bvh4_node */
 };
 
-static inline void ray_slab_sse_init(struct ray_slab_sse *v, const struct ray_slab *rs)
+static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 {
-	v->o[0] = _mm_set1_pd(rs->o[0]);
-	v->o[1] = _mm_set1_pd(rs->o[1]);
-	v->o[2] = _mm_set1_pd(rs->o[2]);
-	v->inv[0] = _mm_set1_pd(rs->inv[0]);
-	v->inv[1] = _mm_set1_pd(rs->inv[1]);
-	v->inv[2] = _mm_set1_pd(rs->inv[2]);
-	v->near_off[0] = rs->near[0] * 6;
-	v->near_off[1] = rs->near[1] * 6 + 2;
-	v->near_off[2] = rs->near[2] * 6 + 4;
-	v->far_off[0] = 6 - rs->near[0] * 6;
-	v->far_off[1] = 8 - rs->near[1] * 6;
-	v->far_off[2] = 10 - rs->near[2] * 6;
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		v->o[k] = _mm_set1_pd(rs->o[k]);
+		v->inv[k] = _mm_set1_pd(rs->inv[k]);
+		v->near_off[k] = rs->near[k] * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
+		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
+	}
 }
 
-static inline __m128d load_pair(const float *p)
+/* The slab distances of children 0-1 and 2-3 at one plane. */
+static inline void slab_t(const float *b, int off, __m128d o, __m128d inv, __m128d *t01,
+			  __m128d *t23)
 {
-	return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)(const void *)p)));
+	__m128 f = _mm_load_ps(b + off);
+
+	*t01 = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(f), o), inv);
+	*t23 = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(f, f)), o), inv);
 }
 
-static inline __m128d slab_t(const float *b, int off, __m128d o, __m128d inv)
+static inline void node_interval(const struct bvh4_node *node, const struct walk_ray *v,
+				 double t_min, double t_max, __m128d lo[2], __m128d hi[2])
 {
-	return _mm_mul_pd(_mm_sub_pd(load_pair(b + off), o), inv);
+	const float *b = &node->lo[0][0];
+	__m128d t01, t23;
+	int k;
+
+	lo[0] = lo[1] = _mm_set1_pd(t_min);
+	hi[0] = hi[1] = _mm_set1_pd(t_max);
+	for (k = 0; k < 3; k++) {
+		slab_t(b, v->near_off[k], v->o[k], v->inv[k], &t01, &t23);
+		lo[0] = _mm_max_pd(t01, lo[0]);
+		lo[1] = _mm_max_pd(t23, lo[1]);
+		slab_t(b, v->far_off[k], v->o[k], v->inv[k], &t01, &t23);
+		hi[0] = _mm_min_pd(t01, hi[0]);
+		hi[1] = _mm_min_pd(t23, hi[1]);
+	}
 }
 
-static inline void node_entries(const struct bvh_node *node, const struct ray_slab_sse *v,
-				double t_min, double t_max, double entry[2])
+static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
+			       double t_min, double t_max, double entry[ACCEL_WIDTH])
 {
-	const float *b = &node->bounds[0][0][0];
-	__m128d lo = _mm_set1_pd(t_min), hi = _mm_set1_pd(t_max), miss;
+	__m128d lo[2], hi[2];
 
-	lo = _mm_max_pd(slab_t(b, v->near_off[0], v->o[0], v->inv[0]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[0], v->o[0], v->inv[0]), hi);
-	lo = _mm_max_pd(slab_t(b, v->near_off[1], v->o[1], v->inv[1]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[1], v->o[1], v->inv[1]), hi);
-	lo = _mm_max_pd(slab_t(b, v->near_off[2], v->o[2], v->inv[2]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[2], v->o[2], v->inv[2]), hi);
-	/* A miss where not (lo <= hi). */
-	miss = _mm_cmpnle_pd(lo, hi);
-	lo = _mm_or_pd(_mm_and_pd(miss, _mm_set1_pd(INFINITY)), _mm_andnot_pd(miss, lo));
-	_mm_storeu_pd(entry, lo);
+	node_interval(node, v, t_min, t_max, lo, hi);
+	_mm_storeu_pd(entry, lo[0]);
+	_mm_storeu_pd(entry + 2, lo[1]);
+	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
 }
 
-/* Bit c set when the ray enters child c's box within (t_min, t_max). */
-static inline int node_hits(const struct bvh_node *node, const struct ray_slab_sse *v,
+static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
-	const float *b = &node->bounds[0][0][0];
-	__m128d lo = _mm_set1_pd(t_min), hi = _mm_set1_pd(t_max);
+	__m128d lo[2], hi[2];
 
-	lo = _mm_max_pd(slab_t(b, v->near_off[0], v->o[0], v->inv[0]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[0], v->o[0], v->inv[0]), hi);
-	lo = _mm_max_pd(slab_t(b, v->near_off[1], v->o[1], v->inv[1]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[1], v->o[1], v->inv[1]), hi);
-	lo = _mm_max_pd(slab_t(b, v->near_off[2], v->o[2], v->inv[2]), lo);
-	hi = _mm_min_pd(slab_t(b, v->far_off[2], v->o[2], v->inv[2]), hi);
-	return _mm_movemask_pd(_mm_cmple_pd(lo, hi));
+	node_interval(node, v, t_min, t_max, lo, hi);
+	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
 }
 #else
-struct ray_slab_sse {
+struct walk_ray {
 	struct ray_slab rs;
 };
 
-static inline void ray_slab_sse_init(struct ray_slab_sse *v, const struct ray_slab *rs)
+static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 {
 	v->rs = *rs;
 }
 
-static inline void node_entries(const struct bvh_node *node, const struct ray_slab_sse *v,
-				double t_min, double t_max, double entry[2])
+static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
+			       double t_min, double t_max, double entry[ACCEL_WIDTH])
 {
 	const struct ray_slab *rs = &v->rs;
-	int c, k;
+	int c, k, mask = 0;
 
-	for (c = 0; c < 2; c++) {
+	for (c = 0; c < ACCEL_WIDTH; c++) {
 		double lo = t_min, hi = t_max;
 		for (k = 0; k < 3; k++) {
-			double t0 = (node->bounds[rs->near[k]][k][c] - rs->o[k]) * rs->inv[k];
-			double t1 = (node->bounds[1 - rs->near[k]][k][c] - rs->o[k]) * rs->inv[k];
+			double b0 = rs->near[k] ? node->hi[k][c] : node->lo[k][c];
+			double b1 = rs->near[k] ? node->lo[k][c] : node->hi[k][c];
+			double t0 = (b0 - rs->o[k]) * rs->inv[k];
+			double t1 = (b1 - rs->o[k]) * rs->inv[k];
 			lo = t0 > lo ? t0 : lo;
 			hi = t1 < hi ? t1 : hi;
 		}
-		entry[c] = lo <= hi ? lo : INFINITY;
+		entry[c] = lo;
+		mask |= (lo <= hi) << c;
 	}
+	return mask;
 }
 
-static inline int node_hits(const struct bvh_node *node, const struct ray_slab_sse *v,
+static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
-	double e[2];
+	double e[ACCEL_WIDTH];
 
-	node_entries(node, v, t_min, t_max, e);
-	return (e[0] != INFINITY) | (e[1] != INFINITY) << 1;
+	return node_entries(node, v, t_min, t_max, e);
 }
 #endif
 
 #define ACCEL_WALK(name) walk_sse2_##name
 #include "accel/accel_walk.h"
-#include "accel/accel_packet_c.h"
 #include "accel/accel_packet.h"
 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
@@ -185,5 +192,5 @@ size_t accel_bytes(const struct accel *a)
 	if (!a)
 		return 0;
 	return sizeof(*a) + a->n_nodes * sizeof(*a->nodes) +
-	       (a->n_bounded + a->n_unbounded) * sizeof(const struct shape *);
+	       (a->n_bounded + a->n_unbounded) * (sizeof(const struct shape *) + sizeof(uint32_t));
 }

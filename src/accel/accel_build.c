@@ -34,9 +34,9 @@
  * 1) (a tree of n leaves has n - 1 nodes, and fewer with bigger leaves):
  * its own node at base, its left child's subtree from base + 1 and its
  * right child's from base + the left's refs.  So the halves of a node can
- * be built by different threads with no lock, no copy and no allocation,
- * and the nodes lie in depth-first order; the indices that bigger leaves
- * leave unused are squeezed out afterwards. */
+ * be built by different threads with no lock, no copy and no allocation.
+ * The indices that bigger leaves leave unused stay unused: the walks' tree
+ * (accel_collapse.c) is made from the slots, and the array then freed. */
 struct build {
 	struct build_ref *refs;
 	struct bvh_node *nodes;
@@ -45,15 +45,10 @@ struct build {
 
 /* The slot of a leaf over refs[first, first + n): their place is final
  * once they make a leaf. */
-static uintptr_t leaf_slot(const struct build *b, size_t first, size_t n)
+static uintptr_t leaf_slot(size_t first, size_t n)
 {
-	uintptr_t one = (uintptr_t)b->refs[first].shape;
-
-	assert(n >= 1 && n <= ACCEL_LEAF_MAX && ACCEL_LEAF_MAX <= 7);
-	if (n > 1)
-		return accel_slot_make(first, n);
-	assert(accel_slot_tag(one) == 0);
-	return one;
+	assert(n >= 1 && n <= ACCEL_LEAF_MAX && ACCEL_LEAF_MAX < ACCEL_SLOT_NODE);
+	return accel_slot_make(first, n);
 }
 /* Subtrees waiting for a thread.  Whoever splits a big node puts its
  * right-hand child here and goes on with the left; idle threads take the
@@ -94,7 +89,7 @@ static void build_child(struct build *b, struct build_pool *pool, struct accel_b
 	/* One ref is a leaf (half the children): no search. */
 	split = n > 1 ? accel_choose_split(b->refs + first, n, depth, box, centres, bounds, bins) : 0;
 	if (split == 0) {
-		b->nodes[parent].slot[c] = leaf_slot(b, first, n);
+		b->nodes[parent].slot[c] = leaf_slot(first, n);
 		return;
 	}
 	b->nodes[parent].slot[c] = accel_slot_make(base, ACCEL_SLOT_NODE);
@@ -235,7 +230,7 @@ static void build_root(struct build *b, size_t n, int threads)
 	split = accel_choose_split(b->refs, n, 0, &box, &centres, bounds, &bins);
 	if (split == 0) {
 		accel_set_child_box(&b->nodes[0], 0, &box);
-		b->nodes[0].slot[0] = leaf_slot(b, 0, n);
+		b->nodes[0].slot[0] = leaf_slot(0, n);
 		for (k = 0; k < 3; k++) {
 			b->nodes[0].bounds[0][k][1] = INFINITY;
 			b->nodes[0].bounds[1][k][1] = -INFINITY;
@@ -244,41 +239,6 @@ static void build_root(struct build *b, size_t n, int threads)
 		return;
 	}
 	build_parallel(b, &bins, n, split, bounds, threads);
-}
-
-/* Moves the nodes the tree uses to the front of the array, keeping their
- * order, and returns how many there are.  Depth-first order is index
- * order, so a node only ever moves down onto an index already passed, and
- * its parent, met before it, has already moved. */
-static size_t squeeze_nodes(struct bvh_node *nodes)
-{
-	struct { size_t old, parent; int c; } stack[ACCEL_STACK];
-	size_t next = 1;
-	int top = 0, c;
-
-	for (c = 1; c >= 0; c--) {
-		if (accel_slot_is_node(nodes[0].slot[c])) {
-			stack[top].old = accel_slot_index(nodes[0].slot[c]);
-			stack[top].parent = 0;
-			stack[top++].c = c;
-		}
-	}
-	while (top > 0) {
-		size_t old, index = next++;
-		top--;
-		old = stack[top].old;
-		nodes[index] = nodes[old];
-		nodes[stack[top].parent].slot[stack[top].c] = accel_slot_make(index, ACCEL_SLOT_NODE);
-		for (c = 1; c >= 0; c--) {
-			if (!accel_slot_is_node(nodes[index].slot[c]))
-				continue;
-			assert(top < ACCEL_STACK);
-			stack[top].old = accel_slot_index(nodes[index].slot[c]);
-			stack[top].parent = index;
-			stack[top++].c = c;
-		}
-	}
-	return next;
 }
 
 /* The refs of the bounded shapes, in the scene's order, with their box and
@@ -294,15 +254,18 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 	a->n_bounded = accel_collect_refs(b->refs, shapes, n_shapes, threads, &b->box, &b->centres);
 	n_unbounded = n_shapes - a->n_bounded;
 	a->unbounded = rt_reallocarray(NULL, n_unbounded, sizeof(*a->unbounded));
-	if (!a->unbounded)
+	a->unbounded_key = rt_reallocarray(NULL, n_unbounded, sizeof(*a->unbounded_key));
+	if (!a->unbounded || !a->unbounded_key)
 		return -RT_E_NOMEM;
 	/* From the end, where a view's floor is, until all are found: in the
 	 * scene's order, without a second pass over a big scene's shapes. */
 	a->n_unbounded = n_unbounded;
 	for (i = n_shapes; i-- > 0 && n_unbounded > 0;) {
 		struct aabb box;
-		if (!shape_bounds(shapes[i], &box))
+		if (!accel_tree_box(shapes[i], &box)) {
 			a->unbounded[--n_unbounded] = shapes[i];
+			a->unbounded_key[n_unbounded] = (uint32_t)i;
+		}
 	}
 	return 0;
 }
@@ -322,27 +285,30 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 		goto out_free;
 	if (a->n_bounded > 0) {
 		const struct shape **leaf_order = (const struct shape **)(void *)b.refs;
-		struct bvh_node *nodes;
 		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1;
 		/* One node a cache line: malloc's big blocks begin 16 bytes
 		 * into a page, which put three nodes in four across two lines
 		 * (a quarter fewer cache misses in the walk, measured with
 		 * cachegrind). */
 		b.nodes = rt_aligned_array(ACCEL_NODE_ALIGN, cap, sizeof(*b.nodes));
-		if (!b.nodes)
+		a->bounded_key = rt_reallocarray(NULL, a->n_bounded, sizeof(*a->bounded_key));
+		if (!b.nodes || !a->bounded_key)
 			goto out_free;
 		build_root(&b, a->n_bounded, threads);
-		a->n_nodes = squeeze_nodes(b.nodes);
-		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();
-		nodes = rt_aligned_shrink(b.nodes, ACCEL_NODE_ALIGN, a->n_nodes, sizeof(*b.nodes));
-		a->nodes = nodes ? nodes : b.nodes;
+		if (accel_collapse(a, b.nodes) < 0)
+			goto out_free;
+		rt_free(b.nodes);
 		b.nodes = NULL;
+		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();
 		/* The shapes in leaf order go to the front of the refs' own
 		 * memory (pointer i lands before ref i is read, never on a ref
 		 * still to be read), which then shrinks: no third array at the
 		 * build's memory peak. */
-		for (i = 0; i < a->n_bounded; i++)
-			leaf_order[i] = b.refs[i].shape;
+		for (i = 0; i < a->n_bounded; i++) {
+			size_t index = b.refs[i].index;
+			a->bounded_key[i] = (uint32_t)index;
+			leaf_order[i] = shapes[index];
+		}
 		a->bounded = rt_reallocarray(leaf_order, a->n_bounded, sizeof(*a->bounded));
 		if (!a->bounded)
 			a->bounded = leaf_order;
@@ -365,6 +331,8 @@ void accel_destroy(struct accel *a)
 		return;
 	rt_free(a->nodes);
 	rt_free(a->bounded);
+	rt_free(a->bounded_key);
 	rt_free(a->unbounded);
+	rt_free(a->unbounded_key);
 	rt_free(a);
 }

@@ -4,17 +4,18 @@
 #ifndef RT_ACCEL_BUILD_H
 #define RT_ACCEL_BUILD_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "accel/accel_tree.h"
 
-/* A shape being sorted into the tree: its box and the shape.  The centre
+/* A shape being sorted into the tree: its box and its index.  The centre
  * that the heuristic sorts by is computed from the box when needed rather
  * than stored, which keeps a reference at 56 bytes (the build's memory
  * peak is the references and the nodes together). */
 struct build_ref {
 	double lo[3], hi[3];
-	const struct shape *shape;
+	size_t index;		/* the shape's, in the scene */
 };
 
 
@@ -25,6 +26,14 @@ struct build_box {
 	double lo[3], hi[3];
 };
 
+
+/* The box of a shape that goes into the tree: true when shape_bounds
+ * gives one whose coordinates are all within +-ACCEL_COORD_MAX (no NaN,
+ * no infinity), so that every box of the tree is finite and quantizes
+ * (accel_collapse.c).  Any other shape is tested by every ray, as an
+ * unbounded one is. */
+#define ACCEL_COORD_MAX 1e30
+bool accel_tree_box(const struct shape *s, struct aabb *box);
 
 #define ACCEL_BINS 16
 

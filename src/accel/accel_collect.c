@@ -29,6 +29,17 @@ struct collect_part {
 	struct build_box box, centres;
 };
 
+bool accel_tree_box(const struct shape *s, struct aabb *box)
+{
+	const double m = ACCEL_COORD_MAX;
+
+	/* Written so that a NaN fails every comparison. */
+	return shape_bounds(s, box) && box->min.x >= -m && box->min.y >= -m && box->min.z >= -m &&
+	       box->max.x <= m && box->max.y <= m && box->max.z <= m && box->min.x <= m &&
+	       box->min.y <= m && box->min.z <= m && box->max.x >= -m && box->max.y >= -m &&
+	       box->max.z >= -m;
+}
+
 static void collect_part(struct collect_part *p)
 {
 	struct build_ref *refs = p->refs + p->first;
@@ -43,7 +54,7 @@ static void collect_part(struct collect_part *p)
 					       &p->centres);
 			bounded_done = n_bounded;
 		}
-		if (!shape_bounds(p->shapes[i], &box))
+		if (!accel_tree_box(p->shapes[i], &box))
 			continue;
 		ref->lo[0] = box.min.x;
 		ref->lo[1] = box.min.y;
@@ -51,7 +62,7 @@ static void collect_part(struct collect_part *p)
 		ref->hi[0] = box.max.x;
 		ref->hi[1] = box.max.y;
 		ref->hi[2] = box.max.z;
-		ref->shape = p->shapes[i];
+		ref->index = i;
 		n_bounded++;
 	}
 	accel_refs_bounds_grow(refs + bounded_done, n_bounded - bounded_done, &p->box, &p->centres);

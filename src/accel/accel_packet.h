@@ -1,21 +1,13 @@
 /* The hierarchy's walks for packets of up to ACCEL_PACKET rays, written
- * once for each set of box tests as accel_walk.h is: the file that
- * includes this defines struct packet_slab, packet_slab_init and
- * packet_node (accel_packet_c.h: plain C; accel_walk_avx2.c: AVX2) and
- * ACCEL_WALK(name).
- *
- * Every ray of a packet gets what the single-ray walk gives it, to the
- * bit, ties included, because each ray meets the same nodes and shapes in
- * the same order with the same t_max as it would alone: a ray's box test
- * here is accel_walk.h's, lane by lane, and where the rays of a packet
- * disagree on which child is nearer, the packet visits the children in
- * both orders, each ray only in its own (near child A for the rays that
- * enter A first, then B for those that enter B first and for A's rays
- * that also meet B, then A again for B's rays that also meet A).  Waiting
- * children keep each ray's entry distance, so that a hit found since rules
- * them out ray by ray as it does alone.  Shadow rays need no order: any
- * blocker will do, and whether one is reachable does not depend on the
- * order (t_max does not shrink).  Nothing here allocates or locks. */
+ * once for each set of box tests as accel_walk.h is (and included after
+ * it).  A packet goes down the tree together: a node's boxes are tested
+ * for each of its rays, and each child is entered once, for the rays that
+ * meet it, in the order the packet's first ray meets them.  Every ray gets
+ * what the single-ray walk gives it, to the bit: the nearest hit with the
+ * keys' tie rule (accel_walk.h) does not depend on the order shapes are
+ * met in, and whether a shadow ray is blocked does not either.  A ray left
+ * alone in its packet walks on as a single ray.  Nothing here allocates
+ * or locks. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -24,214 +16,177 @@
 #include "accel/accel.h"
 #include "accel/accel_tree.h"
 
-/* Tests a leaf's shapes, one after another, for the rays of `mask`: each
- * ray meets them in the order the single-ray walk does. */
-static inline void packet_leaf(const struct accel *a, uintptr_t slot, const struct ray *r,
-			       uint32_t mask, const double *t_min, double *t_max,
-			       const struct shape **hit)
+#ifndef RT_ACCEL_PACKET_COMMON
+#define RT_ACCEL_PACKET_COMMON
+
+/* Tests shape sh, of key `key`, for the rays of `mask` against their
+ * best so far. */
+static inline void packet_best_test(const struct shape *sh, uint32_t key, const struct ray *r,
+				    uint32_t mask, const double *t_min, struct walk_best *b)
 {
-	unsigned count = accel_slot_tag(slot), k;
-	const struct shape *one = (const struct shape *)slot, *const *sh = &one;
+	double t[ACCEL_PACKET];
 	uint32_t m;
 
-	if (count == 0) {
-		if (!one)
-			return;
-		count = 1;
-	} else {
-		sh = a->bounded + accel_slot_index(slot);
+	for (m = mask; m; m &= m - 1) {
+		int i = __builtin_ctz(m);
+		t[i] = b[i].hit ? next_up(b[i].t) : b[i].t;
 	}
-	for (k = 0; k < count; k++)
-		for (m = shape_intersect_packet(sh[k], r, mask, t_min, t_max); m; m &= m - 1)
-			hit[__builtin_ctz(m)] = sh[k];
+	for (m = shape_intersect_packet(sh, r, mask, t_min, t); m; m &= m - 1) {
+		int i = __builtin_ctz(m);
+		if (t[i] < b[i].t || key < b[i].key) {
+			b[i].t = t[i];
+			b[i].hit = sh;
+			b[i].key = key;
+		}
+	}
 }
 
-/* The rays of `mask` that a leaf's shapes block in (t_min, t_max); t is
- * scratch for the shapes to shrink. */
+static inline void packet_leaf_nearest(const struct accel *a, uintptr_t slot, const struct ray *r,
+				       uint32_t mask, const double *t_min, struct walk_best *b)
+{
+	size_t pos = accel_slot_index(slot);
+	unsigned count = accel_slot_tag(slot), k;
+
+	for (k = 0; k < count; k++)
+		packet_best_test(a->bounded[pos + k], a->bounded_key[pos + k], r, mask, t_min, b);
+}
+
+/* The rays of `mask` that a leaf's shapes block in (t_min, t_max). */
 static inline uint32_t packet_leaf_any(const struct accel *a, uintptr_t slot,
 				       const struct ray *r, uint32_t mask, const double *t_min,
-				       const double *t_max, double *t)
+				       const double *t_max)
 {
+	size_t pos = accel_slot_index(slot);
 	unsigned count = accel_slot_tag(slot), k;
-	const struct shape *one = (const struct shape *)slot, *const *sh = &one;
 	uint32_t blocked = 0, m;
+	double t[ACCEL_PACKET];
 
-	if (count == 0) {
-		if (!one)
-			return 0;
-		count = 1;
-	} else {
-		sh = a->bounded + accel_slot_index(slot);
-	}
 	for (k = 0; k < count && mask; k++) {
+		/* A copy for the shape to shrink: a blocker's distance does
+		 * not matter here. */
 		for (m = mask; m; m &= m - 1)
 			t[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
-		m = shape_intersect_packet(sh[k], r, mask, t_min, t);
+		m = shape_intersect_packet(a->bounded[pos + k], r, mask, t_min, t);
 		blocked |= m;
 		mask &= ~m;
 	}
 	return blocked;
 }
 
-/* The rays of `mask` whose entry is not beyond their t_max. */
-static inline uint32_t packet_in_reach(uint32_t mask, const double *entry, const double *t_max)
+static inline uint32_t packet_all(int n)
 {
-	uint32_t m, keep = 0;
-
-	for (m = mask; m; m &= m - 1) {
-		int i = __builtin_ctz(m);
-		if (!(entry[i] > t_max[i]))
-			keep |= (uint32_t)1 << i;
-	}
-	return keep;
+	return n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1;
 }
 
-/* The rays' intervals, in arrays of ACCEL_PACKET for the box tests (the
- * lanes past n are never used). */
-static inline void packet_copy_in(double *to, const double *from, int n)
-{
-	int i;
-
-	for (i = 0; i < ACCEL_PACKET; i++)
-		to[i] = i < n ? from[i] : 0.0;
-}
-
-/* A ray left alone in its packet walks the rest of the subtree as it
- * would alone (accel_walk.h): the packet's box tests would cost as much
- * for one ray as for four. */
-static inline void packet_alone(const struct accel *a, size_t node, const struct ray *r,
-				uint32_t mask, const double *t_min, double *t_max,
-				const struct shape **hit)
-{
-	int i = __builtin_ctz(mask);
-	struct ray_slab rs;
-	struct ray_slab_sse v;
-
-	ray_slab_init(&rs, r + i);
-	ray_slab_sse_init(&v, &rs);
-	hit[i] = ACCEL_WALK(subtree)(a, node, &v, r + i, t_min[i], t_max + i, hit[i]);
-}
+#endif
 
 static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
-					 const double *t_min_in, double *t_max_in,
+					 const double *t_min, double *t_max,
 					 const struct shape **hit)
 {
-	/* Waiting child j keeps its rays' entries in entry[buf[j]]: the box
-	 * test writes them straight into the next two, and a push that wants
-	 * them the other way round swaps two indices instead of copying.  At
-	 * most two children wait for each node on the path down, so twice the
-	 * single walk's stack holds them. */
-	struct { uintptr_t slot; uint32_t mask; } stack[2 * ACCEL_STACK];
-	double entry[2 * ACCEL_STACK + 2][ACCEL_PACKET];
-	int buf[2 * ACCEL_STACK + 2];
-	double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
-	struct packet_slab ps;
-	uint32_t all = n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1, mask = all, m;
-	size_t node = 0;
+	struct { uintptr_t slot; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
+	struct walk_ray v[ACCEL_PACKET];
+	struct walk_best b[ACCEL_PACKET];
+	uint32_t all = packet_all(n);
 	size_t i;
 	int top = 0;
 
-	packet_copy_in(t_min, t_min_in, n);
-	packet_copy_in(t_max, t_max_in, n);
-	for (i = 0; i < (size_t)n; i++)
-		hit[i] = NULL;
-	for (i = 0; i < a->n_unbounded; i++)
-		for (m = shape_intersect_packet(a->unbounded[i], r, all, t_min, t_max); m; m &= m - 1)
-			hit[__builtin_ctz(m)] = a->unbounded[i];
-	if (a->n_nodes == 0 || !all)
-		goto done;
-	for (i = 0; i < 2 * ACCEL_STACK + 2; i++)
-		buf[i] = (int)i;
-	packet_slab_init(&ps, r, n);
-	for (;;) {
-		const struct bvh_node *nd = &a->nodes[node];
-		double *e0 = entry[buf[top]], *e1 = entry[buf[top + 1]];
-		uint32_t h0, h1, n1, first0, first1, then0, then1;
-		uintptr_t go;
-
-		if (!(mask & (mask - 1))) {
-			packet_alone(a, node, r, mask, t_min, t_max, hit);
-			goto pop;
-		}
-		packet_node(nd, &ps, mask, t_min, t_max, e0, e1, &h0, &h1, &n1);
-		/* Child 1 is a ray's nearer only when strictly nearer, as alone. */
-		first0 = mask & h0 & ~n1;
-		first1 = mask & n1 & h1;
-		then1 = first1 | (first0 & h1);
-		then0 = first1 & h0;
-		/* Waiting, deepest first: child 0 for child 1's rays that also
-		 * meet it, then child 1 for the rest of its rays. */
-		if (first0 && then0) {
-			stack[top].slot = nd->slot[0];
-			stack[top++].mask = then0;
-			stack[top].slot = nd->slot[1];
-			stack[top++].mask = then1;
-		} else if (first0 && then1) {
-			int b = buf[top];
-			buf[top] = buf[top + 1];
-			buf[top + 1] = b;
-			stack[top].slot = nd->slot[1];
-			stack[top++].mask = then1;
-		} else if (then0) {
-			stack[top].slot = nd->slot[0];
-			stack[top++].mask = then0;
-		}
-		if (first0 | first1) {
-			mask = first0 ? first0 : first1;
-			go = nd->slot[first0 ? 0 : 1];
-			if (accel_slot_is_node(go)) {
-				node = accel_slot_index(go);
-				continue;
-			}
-			packet_leaf(a, go, r, mask, t_min, t_max, hit);
-		}
-pop:
-		for (;;) {
-			if (top == 0)
-				goto done;
-			top--;
-			mask = packet_in_reach(stack[top].mask, entry[buf[top]], t_max);
-			if (!mask)
-				continue;
-			if (accel_slot_is_node(stack[top].slot))
-				break;
-			packet_leaf(a, stack[top].slot, r, mask, t_min, t_max, hit);
-		}
-		node = accel_slot_index(stack[top].slot);
+	for (i = 0; i < (size_t)n; i++) {
+		b[i].t = t_max[i];
+		b[i].hit = NULL;
+		b[i].key = 0;
 	}
-done:
-	memcpy(t_max_in, t_max, (size_t)n * sizeof(*t_max));
+	for (i = 0; i < a->n_unbounded; i++)
+		packet_best_test(a->unbounded[i], a->unbounded_key[i], r, all, t_min, b);
+	if (a->n_nodes > 0 && all) {
+		for (i = 0; i < (size_t)n; i++) {
+			struct ray_slab rs;
+			ray_slab_init(&rs, r + i);
+			walk_ray_init(&v[i], &rs);
+		}
+		stack[top].slot = accel_slot_make(0, ACCEL_SLOT_NODE);
+		stack[top++].mask = all;
+	}
+	while (top > 0) {
+		const struct bvh4_node *nd;
+		uint32_t mask, child[ACCEL_WIDTH] = { 0, 0, 0, 0 }, m;
+		double e[ACCEL_WIDTH], first[ACCEL_WIDTH];
+		int order[ACCEL_WIDTH], count, k, lead = -1;
+		uintptr_t slot;
+
+		top--;
+		slot = stack[top].slot;
+		mask = stack[top].mask;
+		if (!accel_slot_is_node(slot)) {
+			packet_leaf_nearest(a, slot, r, mask, t_min, b);
+			continue;
+		}
+		if (!(mask & (mask - 1))) {
+			int one = __builtin_ctz(mask);
+			ACCEL_WALK(nearest_from)(a, accel_slot_index(slot), &v[one], r + one,
+						 t_min[one], &b[one]);
+			continue;
+		}
+		nd = &a->nodes[accel_slot_index(slot)];
+		for (m = mask; m; m &= m - 1) {
+			int ray = __builtin_ctz(m);
+			unsigned hits = (unsigned)node_entries(nd, &v[ray], t_min[ray], b[ray].t, e);
+			if (hits && lead < 0) {
+				lead = ray;
+				memcpy(first, e, sizeof(first));
+				for (k = 0; k < ACCEL_WIDTH; k++)
+					if (!(hits >> k & 1))
+						first[k] = INFINITY;
+			}
+			for (; hits; hits &= hits - 1)
+				child[__builtin_ctz(hits)] |= (uint32_t)1 << ray;
+		}
+		if (lead < 0)
+			continue;
+		/* The children in the lead ray's order, the ones it misses
+		 * last; pushed farthest first. */
+		count = order_children((child[0] != 0) | (child[1] != 0) << 1 | (child[2] != 0) << 2 |
+					       (child[3] != 0) << 3,
+				       first, order);
+		for (k = count - 1; k >= 0; k--) {
+			stack[top].slot = nd->slot[order[k]];
+			stack[top++].mask = child[order[k]];
+		}
+	}
+	for (i = 0; i < (size_t)n; i++) {
+		t_max[i] = b[i].t;
+		hit[i] = b[i].hit;
+	}
 }
 
 /* Whether anything blocks each ray in (t_min[i], t_max[i]): the mask of
  * the rays blocked. */
 static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct ray *r, int n,
-					    const double *t_min_in, const double *t_max_in)
+					    const double *t_min, const double *t_max)
 {
-	struct { uintptr_t slot; uint32_t mask; } stack[ACCEL_STACK + 1];
-	double e0[ACCEL_PACKET], e1[ACCEL_PACKET], t[ACCEL_PACKET];
-	double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
-	struct packet_slab ps;
-	uint32_t all = n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1, open = all;
+	struct { size_t node; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
+	struct walk_ray v[ACCEL_PACKET];
+	uint32_t all = packet_all(n), open = all;
+	double t[ACCEL_PACKET];
 	size_t i;
 	int top = 0;
 
-	packet_copy_in(t_min, t_min_in, n);
-	packet_copy_in(t_max, t_max_in, n);
-	/* t is a copy that the shapes may shrink: a blocker's distance
-	 * does not matter here. */
 	for (i = 0; i < a->n_unbounded && open; i++) {
 		memcpy(t, t_max, (size_t)n * sizeof(*t));
 		open &= ~shape_intersect_packet(a->unbounded[i], r, open, t_min, t);
 	}
 	if (a->n_nodes == 0 || !open)
 		return all & ~open;
-	packet_slab_init(&ps, r, n);
-	stack[top].slot = accel_slot_make(0, ACCEL_SLOT_NODE);
+	for (i = 0; i < (size_t)n; i++) {
+		struct ray_slab rs;
+		ray_slab_init(&rs, r + i);
+		walk_ray_init(&v[i], &rs);
+	}
+	stack[top].node = 0;
 	stack[top++].mask = open;
 	while (top > 0) {
-		const struct bvh_node *nd;
-		uint32_t mask, h[2], n1;
+		const struct bvh4_node *nd;
+		uint32_t mask, child[ACCEL_WIDTH] = { 0, 0, 0, 0 }, m;
 		int c;
 
 		top--;
@@ -239,31 +194,29 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 		if (!mask)
 			continue;
 		if (!(mask & (mask - 1))) {
-			/* Alone: the single walk, as for the nearest hit. */
-			int i1 = __builtin_ctz(mask);
-			struct ray_slab rs;
-			struct ray_slab_sse v;
-
-			ray_slab_init(&rs, r + i1);
-			ray_slab_sse_init(&v, &rs);
-			if (ACCEL_WALK(occluded_subtree)(a, accel_slot_index(stack[top].slot), &v,
-							 r + i1, t_min[i1], t_max[i1]))
+			int one = __builtin_ctz(mask);
+			if (ACCEL_WALK(occluded_from)(a, stack[top].node, &v[one], r + one, t_min[one],
+						      t_max[one]))
 				open &= ~mask;
 			continue;
 		}
-		nd = &a->nodes[accel_slot_index(stack[top].slot)];
-		packet_node(nd, &ps, mask, t_min, t_max, e0, e1, &h[0], &h[1], &n1);
-		for (c = 0; c < 2; c++) {
+		nd = &a->nodes[stack[top].node];
+		for (m = mask; m; m &= m - 1) {
+			int ray = __builtin_ctz(m);
+			unsigned hits = (unsigned)node_hits(nd, &v[ray], t_min[ray], t_max[ray]);
+			for (; hits; hits &= hits - 1)
+				child[__builtin_ctz(hits)] |= (uint32_t)1 << ray;
+		}
+		for (c = 0; c < ACCEL_WIDTH; c++) {
 			uintptr_t s = nd->slot[c];
-			uint32_t m = h[c] & mask;
-			if (!m)
+			if (!child[c])
 				continue;
 			if (accel_slot_is_node(s)) {
-				stack[top].slot = s;
-				stack[top++].mask = m;
+				stack[top].node = accel_slot_index(s);
+				stack[top++].mask = child[c];
 				continue;
 			}
-			open &= ~packet_leaf_any(a, s, r, m, t_min, t_max, t);
+			open &= ~packet_leaf_any(a, s, r, child[c] & open, t_min, t_max);
 			if (!open)
 				return all;
 		}

@@ -424,7 +424,7 @@ static bool sah_split(const struct build_ref *refs, size_t n, const struct build
 /* A ref in registers: its bounds as three pairs and its shape. */
 struct ref_regs {
 	__m128d lo01, lo2hi0, hi12;
-	const struct shape *shape;
+	size_t index;
 };
 
 static inline struct ref_regs ref_load(const struct build_ref *r)
@@ -434,7 +434,7 @@ static inline struct ref_regs ref_load(const struct build_ref *r)
 	v.lo01 = _mm_loadu_pd(r->lo);
 	v.lo2hi0 = _mm_loadu_pd(r->lo + 2);
 	v.hi12 = _mm_loadu_pd(r->hi + 1);
-	v.shape = r->shape;
+	v.index = r->index;
 	return v;
 }
 
@@ -443,7 +443,7 @@ static inline void ref_store(struct build_ref *r, struct ref_regs v)
 	_mm_storeu_pd(r->lo, v.lo01);
 	_mm_storeu_pd(r->lo + 2, v.lo2hi0);
 	_mm_storeu_pd(r->hi + 1, v.hi12);
-	r->shape = v.shape;
+	r->index = v.index;
 }
 
 /* One side's box and centre bounds, in registers. */

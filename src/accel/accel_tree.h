@@ -1,9 +1,10 @@
-/* The hierarchy's layout, shared by its build (accel_build.c) and its
- * traversal (accel.c) and private to them.  A node is 64 bytes: the boxes
- * of both its children (float bounds rounded outwards, so they never cut
- * off a hit, stored child-interleaved so that one SSE2 operation tests
- * both) and what each child is: another node, a leaf's one shape or a
- * leaf's range of shapes. */
+/* The hierarchy's layout, shared by its build (accel_build.c,
+ * accel_collapse.c) and its walks (accel.c, accel_walk_avx2.c) and
+ * private to them.  The build makes a binary tree (struct bvh_node: the
+ * float boxes of two children, rounded outwards so that they never cut
+ * off a hit), which accel_collapse.c turns into the tree the walks use:
+ * four children a node (struct bvh4_node, one cache line), their boxes
+ * side by side so that one four-lane operation tests all four. */
 #ifndef RT_ACCEL_TREE_H
 #define RT_ACCEL_TREE_H
 
@@ -21,16 +22,13 @@
 #define ACCEL_SAH_DEPTH 40
 #define ACCEL_STACK 128
 
-/* What a child slot holds, by its low three bits: 0, the one shape of a
- * leaf (a pointer: shapes are at least 8-byte aligned), so that the most
- * common leaf costs no look-up in accel.bounded; 1, a node (index << 3);
- * 2 to ACCEL_LEAF_MAX, a leaf of that many shapes from accel.bounded[slot
- * >> 3].  A null pointer is an empty slot. */
-#define ACCEL_SLOT_NODE 1u
+/* What a child slot holds, by its low three bits: ACCEL_SLOT_NODE, a
+ * node (index << 3); 0 to ACCEL_LEAF_MAX, a leaf of that many shapes from
+ * accel.bounded[slot >> 3] (0: an empty slot, whose box no ray enters). */
+#define ACCEL_SLOT_NODE 7u
 #define ACCEL_SLOT_TAG_MASK 7u
 
-/* The tag of a slot: 0 a single shape, ACCEL_SLOT_NODE a node, 2 and up
- * a leaf's count. */
+/* The tag of a slot: ACCEL_SLOT_NODE a node, else a leaf's count. */
 static inline unsigned accel_slot_tag(uintptr_t slot)
 {
 	return (unsigned)(slot & ACCEL_SLOT_TAG_MASK);
@@ -52,24 +50,52 @@ static inline uintptr_t accel_slot_make(size_t index, unsigned tag)
 	return (uintptr_t)index << 3 | tag;
 }
 
-/* The node array's alignment: one node, one cache line. */
+/* The node arrays' alignment: a cache line. */
 #define ACCEL_NODE_ALIGN 64
 
+/* The build's binary node: bounds[side][axis][child], side 0 the
+ * minimum, 1 the maximum. */
 struct bvh_node {
-	/* bounds[side][axis][child]: side 0 the minimum, 1 the maximum. */
 	float bounds[2][3][2];
 	uintptr_t slot[2];
 };
 
+#define ACCEL_WIDTH 4
+
+/* The walks' node, two cache lines: lo[axis][child] and hi[axis][child],
+ * the children's float boxes (the binary tree's, widened: see
+ * accel_collapse.c), side by side so that one four-lane operation takes a
+ * plane of all four.  An empty child has lo +inf and hi -inf on every
+ * axis, a box no ray enters, and a slot of 0, a leaf of no shapes.
+ * (Boxes quantized to bytes, one cache line a node, made the walks slower
+ * here: the dequantizing cost more than the halved memory saved.) */
+struct bvh4_node {
+	float lo[3][ACCEL_WIDTH], hi[3][ACCEL_WIDTH];
+	uint32_t slot[ACCEL_WIDTH];
+	uint32_t pad[4];
+};
+
+/* Which shape wins an exact tie, whatever order a walk meets them in:
+ * the one earlier in the scene (its key, its index among the scene's
+ * shapes), as a plain loop over the scene with a strict comparison
+ * would have it.  So the nearest hit does not depend on the tree's shape
+ * or the order of its walk, and every walk (four lanes or two, packets
+ * or single rays, any thread count) gives the same image. */
 struct accel {
-	struct bvh_node *nodes;	/* the root first, then in depth-first order */
+	struct bvh4_node *nodes;	/* the root first */
 	size_t n_nodes;
 	const struct shape **bounded;	/* in leaf order */
+	uint32_t *bounded_key;		/* each one's index in the scene */
 	size_t n_bounded;
-	const struct shape **unbounded;
+	const struct shape **unbounded;	/* in the scene's order */
+	uint32_t *unbounded_key;
 	size_t n_unbounded;
 	bool walk_avx2;		/* the walks of accel_walk_avx2.c, where the processor has it */
 };
+
+/* Builds a->nodes and a->n_nodes, the four-child tree, from the binary
+ * one (its root at 0).  0 or -RT_E_NOMEM. */
+int accel_collapse(struct accel *a, const struct bvh_node *binary);
 
 /* The walks with AVX2 box tests (accel_walk_avx2.c): the same nodes in
  * the same order with the same arithmetic, so the same hits.  Usable only

@@ -1,188 +1,214 @@
-/* The hierarchy's two walks, nearest hit and any hit, written once for
- * each set of box tests: the file that includes this defines struct
- * ray_slab_sse, ray_slab_sse_init, node_entries and node_hits (accel.c: SSE2
- * or plain C; accel_walk_avx2.c: AVX2) and ACCEL_WALK(name), the names the
- * walks get.  Closest-hit traversal enters the nearer child first, in the
- * same order as a tree with one box per node would, so equal-distance hits
- * resolve alike; shadow rays stop at the first blocker.  Nothing here
- * allocates or locks per ray. */
+/* The hierarchy's walks, nearest hit and any hit, written once for each
+ * set of box tests: the file that includes this defines struct walk_ray,
+ * walk_ray_init, node_entries and node_hits (accel.c: SSE2 or plain C;
+ * accel_walk_avx2.c: AVX2) and ACCEL_WALK(name), the names the walks get.
+ *
+ * The nearest hit is the nearest t, and on an exact tie the shape with
+ * the lower key (accel_tree.h): a shape that ties the best so far is
+ * tested up to one step past its t (next_up), and kept only if its key is
+ * lower.  So the answer is a plain loop's over the scene, whatever order
+ * the walk meets the shapes in.  The walk enters the nearest child first
+ * and skips a waiting child once a hit is nearer than its entry (a child
+ * entered exactly at the hit's t may still hold a tie).  Shadow rays stop
+ * at the first blocker.  Nothing here allocates or locks per ray. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
 
-/* Tests the shapes of a leaf slot for the nearest hit. */
-static inline const struct shape *leaf_intersect(const struct accel *a, uintptr_t slot,
-						 const struct ray *r, double t_min, double *t_max,
-						 const struct shape *hit)
+#ifndef RT_ACCEL_WALK_COMMON
+#define RT_ACCEL_WALK_COMMON
+
+/* At most three children wait for each node on the path down. */
+#define ACCEL_WALK_STACK (3 * ACCEL_STACK)
+#ifndef ACCEL_PREFETCH
+#define ACCEL_PREFETCH 1
+#endif
+
+/* The least double above x (x itself for +inf and NaN): the bound that
+ * lets a shape's test report a hit at exactly x. */
+static inline double next_up(double x)
 {
+	uint64_t bits;
+
+	if (!(x < INFINITY))
+		return x;
+	if (x == 0.0)
+		return 4.9406564584124654e-324;	/* the least subnormal */
+	memcpy(&bits, &x, sizeof(bits));
+	bits += x > 0.0 ? 1 : (uint64_t)-1;
+	memcpy(&x, &bits, sizeof(x));
+	return x;
+}
+
+/* The best hit so far of one ray. */
+struct walk_best {
+	double t;
+	const struct shape *hit;
+	uint32_t key;
+};
+
+/* Tests shape sh, of key `key`, against the best so far. */
+static inline void best_test(struct walk_best *b, const struct shape *sh, uint32_t key,
+			     const struct ray *r, double t_min)
+{
+	double t = b->hit ? next_up(b->t) : b->t;
+
+	if (shape_intersect(sh, r, t_min, &t) && (t < b->t || key < b->key)) {
+		b->t = t;
+		b->hit = sh;
+		b->key = key;
+	}
+}
+
+static inline void leaf_nearest(const struct accel *a, uintptr_t slot, const struct ray *r,
+				double t_min, struct walk_best *b)
+{
+	size_t pos = accel_slot_index(slot);
 	unsigned count = accel_slot_tag(slot), k;
 
-	if (count == 0) {
-		const struct shape *sh = (const struct shape *)slot;
-		return sh && shape_intersect(sh, r, t_min, t_max) ? sh : hit;
-	}
-	for (k = 0; k < count; k++) {
-		const struct shape *sh = a->bounded[accel_slot_index(slot) + k];
-		if (shape_intersect(sh, r, t_min, t_max))
-			hit = sh;
-	}
-	return hit;
+	for (k = 0; k < count; k++)
+		best_test(b, a->bounded[pos + k], a->bounded_key[pos + k], r, t_min);
 }
 
 /* Whether any shape of a leaf slot is hit within (t_min, t_max). */
 static inline bool leaf_occluded(const struct accel *a, uintptr_t slot, const struct ray *r,
 				 double t_min, double t_max)
 {
+	size_t pos = accel_slot_index(slot);
 	unsigned count = accel_slot_tag(slot), k;
-	double t = t_max;
 
-	if (count == 0) {
-		const struct shape *sh = (const struct shape *)slot;
-		return sh && shape_intersect(sh, r, t_min, &t);
-	}
 	for (k = 0; k < count; k++) {
-		t = t_max;
-		if (shape_intersect(a->bounded[accel_slot_index(slot) + k], r, t_min, &t))
+		double t = t_max;
+		if (shape_intersect(a->bounded[pos + k], r, t_min, &t))
 			return true;
 	}
 	return false;
 }
 
-/* The nearest-hit walk of the subtree under `node`, the hit so far
- * `hit`, for a ray left alone in its packet (accel_packet.h): the loop of
- * ACCEL_WALK(intersect) below, which keeps its own copy.  Shared, the
- * single walk read the ray's values through a pointer after every shape's
- * call instead of keeping them in registers: fewer instructions, but the
- * course example's render 5-10% slower in paired runs. */
-static const struct shape *ACCEL_WALK(subtree)(const struct accel *a, size_t node,
-						      const struct ray_slab_sse *vp,
-						      const struct ray *r, double t_min,
-						      double *t_max, const struct shape *hit)
+/* The hit children of a node (mask), nearest first by entry e: how many,
+ * their numbers in order[].  Equal entries keep the children's order. */
+static inline int order_children(int mask, const double e[ACCEL_WIDTH], int order[ACCEL_WIDTH])
 {
-	struct { uintptr_t slot; double entry; } stack[ACCEL_STACK];
+	int n = 0, c, j;
+
+	for (c = 0; c < ACCEL_WIDTH; c++) {
+		if (!(mask >> c & 1))
+			continue;
+		for (j = n; j > 0 && e[order[j - 1]] > e[c]; j--)
+			order[j] = order[j - 1];
+		order[j] = c;
+		n++;
+	}
+	return n;
+}
+
+#endif
+
+/* The nearest hit under node `node` for one ray, from the best so far. */
+static inline __attribute__((always_inline)) void
+ACCEL_WALK(nearest_from)(const struct accel *a, size_t node, const struct walk_ray *v,
+			 const struct ray *r, double t_min, struct walk_best *best)
+{
+	struct { uintptr_t slot; double entry; } stack[ACCEL_WALK_STACK];
+	struct walk_best b = *best;
+	uintptr_t slot;
 	int top = 0;
 
 	for (;;) {
-		const struct bvh_node *n = &a->nodes[node];
-		double e[2];
-		int near = 0, far = 1;
+		const struct bvh4_node *n = &a->nodes[node];
+		double e[ACCEL_WIDTH];
+		int mask = node_entries(n, v, t_min, b.t, e);
 
-		node_entries(n, vp, t_min, *t_max, e);
-		if (e[1] < e[0]) {
-			near = 1;
-			far = 0;
-		}
-		if (e[near] != INFINITY) {
-			/* The farther child waits on the stack; the nearer one is
-			 * entered now, a leaf's shapes tested at once. */
-			if (e[far] != INFINITY) {
-				stack[top].slot = n->slot[far];
-				stack[top++].entry = e[far];
+		if (mask) {
+			int order[ACCEL_WIDTH], k = 1, count;
+			if (mask & (mask - 1)) {
+				/* The farther children wait, farthest deepest. */
+				count = order_children(mask, e, order);
+				for (k = count - 1; k > 0; k--) {
+					stack[top].slot = n->slot[order[k]];
+					stack[top++].entry = e[order[k]];
+					if (ACCEL_PREFETCH && accel_slot_is_node(n->slot[order[k]])) {
+						__builtin_prefetch(&a->nodes[accel_slot_index(n->slot[order[k]])]);
+						__builtin_prefetch((const char *)&a->nodes[accel_slot_index(n->slot[order[k]])] + 64);
+					}
+				}
+			} else {
+				order[0] = __builtin_ctz((unsigned)mask);
 			}
-			if (accel_slot_is_node(n->slot[near])) {
-				node = accel_slot_index(n->slot[near]);
+			slot = n->slot[order[0]];
+			if (accel_slot_is_node(slot)) {
+				node = accel_slot_index(slot);
 				continue;
 			}
-			hit = leaf_intersect(a, n->slot[near], r, t_min, t_max, hit);
+			leaf_nearest(a, slot, r, t_min, &b);
 		}
-		/* Back up to the nearest waiting child that a hit found since has
-		 * not ruled out. */
+		/* Back up to the nearest waiting child that a hit found since
+		 * has not ruled out. */
 		for (;;) {
-			if (top == 0)
-				return hit;
+			if (top == 0) {
+				*best = b;
+				return;
+			}
 			top--;
-			if (stack[top].entry > *t_max)
+			if (stack[top].entry > b.t)
 				continue;
-			if (accel_slot_is_node(stack[top].slot))
+			slot = stack[top].slot;
+			if (accel_slot_is_node(slot))
 				break;
-			hit = leaf_intersect(a, stack[top].slot, r, t_min, t_max, hit);
+			leaf_nearest(a, slot, r, t_min, &b);
 		}
-		node = accel_slot_index(stack[top].slot);
+		node = accel_slot_index(slot);
 	}
 }
 
 static const struct shape *ACCEL_WALK(intersect)(const struct accel *a, const struct ray *r,
 						 double t_min, double *t_max)
 {
-	const struct shape *hit = NULL;
-	struct { uintptr_t slot; double entry; } stack[ACCEL_STACK];
-	struct ray_slab rs;
-	struct ray_slab_sse v;
-	uintptr_t node = 0;
+	struct walk_best b = { *t_max, NULL, 0 };
 	size_t i;
-	int top = 0;
 
 	for (i = 0; i < a->n_unbounded; i++)
-		if (shape_intersect(a->unbounded[i], r, t_min, t_max))
-			hit = a->unbounded[i];
-	if (a->n_nodes == 0)
-		return hit;
-	ray_slab_init(&rs, r);
-	ray_slab_sse_init(&v, &rs);
-	for (;;) {
-		const struct bvh_node *n = &a->nodes[node];
-		double e[2];
-		int near = 0, far = 1;
+		best_test(&b, a->unbounded[i], a->unbounded_key[i], r, t_min);
+	if (a->n_nodes > 0) {
+		struct ray_slab rs;
+		struct walk_ray v;
 
-		node_entries(n, &v, t_min, *t_max, e);
-		if (e[1] < e[0]) {
-			near = 1;
-			far = 0;
-		}
-		if (e[near] != INFINITY) {
-			/* The farther child waits on the stack; the nearer one is
-			 * entered now, a leaf's shapes tested at once. */
-			if (e[far] != INFINITY) {
-				stack[top].slot = n->slot[far];
-				stack[top++].entry = e[far];
-			}
-			if (accel_slot_is_node(n->slot[near])) {
-				node = accel_slot_index(n->slot[near]);
-				continue;
-			}
-			hit = leaf_intersect(a, n->slot[near], r, t_min, t_max, hit);
-		}
-		/* Back up to the nearest waiting child that a hit found since has
-		 * not ruled out. */
-		for (;;) {
-			if (top == 0)
-				return hit;
-			top--;
-			if (stack[top].entry > *t_max)
-				continue;
-			if (accel_slot_is_node(stack[top].slot))
-				break;
-			hit = leaf_intersect(a, stack[top].slot, r, t_min, t_max, hit);
-		}
-		node = accel_slot_index(stack[top].slot);
+		ray_slab_init(&rs, r);
+		walk_ray_init(&v, &rs);
+		ACCEL_WALK(nearest_from)(a, 0, &v, r, t_min, &b);
 	}
+	*t_max = b.t;
+	return b.hit;
 }
 
-/* The any-hit walk of the subtree under `node`, for a ray left alone in
- * its packet (accel_packet.h).  The same loop as ACCEL_WALK(occluded)
- * below, which keeps its own copy: calling this from there cost 3% more
- * instructions in the shadow walk (callgrind, cloud-100k). */
-static bool ACCEL_WALK(occluded_subtree)(const struct accel *a, size_t node,
-					 const struct ray_slab_sse *vp, const struct ray *r,
-					 double t_min, double t_max)
+/* Whether anything under node `node` blocks the ray in (t_min, t_max).
+ * Any blocker will do, so leaves are tested as they are met and only
+ * nodes wait on the stack. */
+static inline __attribute__((always_inline)) bool
+ACCEL_WALK(occluded_from)(const struct accel *a, size_t node, const struct walk_ray *v,
+			  const struct ray *r, double t_min, double t_max)
 {
-	uintptr_t stack[ACCEL_STACK];
+	size_t stack[ACCEL_WALK_STACK];
 	int top = 0;
 
 	stack[top++] = node;
 	while (top > 0) {
-		const struct bvh_node *n = &a->nodes[stack[--top]];
-		int hits = node_hits(n, vp, t_min, t_max), c;
+		const struct bvh4_node *n = &a->nodes[stack[--top]];
+		unsigned mask = (unsigned)node_hits(n, v, t_min, t_max);
 
-		for (c = 0; c < 2; c++) {
-			if (!(hits & (1 << c)))
-				continue;
-			if (accel_slot_is_node(n->slot[c]))
-				stack[top++] = accel_slot_index(n->slot[c]);
-			else if (leaf_occluded(a, n->slot[c], r, t_min, t_max))
+		for (; mask; mask &= mask - 1) {
+			uintptr_t slot = n->slot[__builtin_ctz(mask)];
+			if (accel_slot_is_node(slot)) {
+				stack[top++] = accel_slot_index(slot);
+				if (ACCEL_PREFETCH) {
+					__builtin_prefetch(&a->nodes[accel_slot_index(slot)]);
+					__builtin_prefetch((const char *)&a->nodes[accel_slot_index(slot)] + 64);
+				}
+			} else if (leaf_occluded(a, slot, r, t_min, t_max))
 				return true;
 		}
 	}
@@ -192,11 +218,9 @@ static bool ACCEL_WALK(occluded_subtree)(const struct accel *a, size_t node,
 static bool ACCEL_WALK(occluded)(const struct accel *a, const struct ray *r, double t_min,
 				 double t_max)
 {
-	uintptr_t stack[ACCEL_STACK];
 	struct ray_slab rs;
-	struct ray_slab_sse v;
+	struct walk_ray v;
 	size_t i;
-	int top = 0;
 
 	for (i = 0; i < a->n_unbounded; i++) {
 		double t = t_max;
@@ -206,22 +230,6 @@ static bool ACCEL_WALK(occluded)(const struct accel *a, const struct ray *r, dou
 	if (a->n_nodes == 0)
 		return false;
 	ray_slab_init(&rs, r);
-	ray_slab_sse_init(&v, &rs);
-	stack[top++] = 0;
-	while (top > 0) {
-		const struct bvh_node *n = &a->nodes[stack[--top]];
-		int hits = node_hits(n, &v, t_min, t_max), c;
-
-		/* Any blocker will do, so leaves are tested as they are met and
-		 * only nodes wait on the stack. */
-		for (c = 0; c < 2; c++) {
-			if (!(hits & (1 << c)))
-				continue;
-			if (accel_slot_is_node(n->slot[c]))
-				stack[top++] = accel_slot_index(n->slot[c]);
-			else if (leaf_occluded(a, n->slot[c], r, t_min, t_max))
-				return true;
-		}
-	}
-	return false;
+	walk_ray_init(&v, &rs);
+	return ACCEL_WALK(occluded_from)(a, 0, &v, r, t_min, t_max);
 }
