@@ -264,7 +264,7 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 		struct aabb box;
 		if (!accel_tree_box(shapes[i], &box)) {
 			a->unbounded[--n_unbounded] = shapes[i];
-			a->unbounded_key[n_unbounded] = (uint32_t)i;
+			a->unbounded_key[n_unbounded] = (uint32_t)n_unbounded;
 		}
 	}
 	return 0;
@@ -306,7 +306,7 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 		 * build's memory peak. */
 		for (i = 0; i < a->n_bounded; i++) {
 			size_t index = b.refs[i].index;
-			a->bounded_key[i] = (uint32_t)index;
+			a->bounded_key[i] = (uint32_t)(a->n_unbounded + index);
 			leaf_order[i] = shapes[index];
 		}
 		a->bounded = rt_reallocarray(leaf_order, a->n_bounded, sizeof(*a->bounded));

@@ -76,19 +76,25 @@ struct bvh4_node {
 };
 
 /* Which shape wins an exact tie, whatever order a walk meets them in:
- * the one earlier in the scene (its key, its index among the scene's
- * shapes), as a plain loop over the scene with a strict comparison
- * would have it.  So the nearest hit does not depend on the tree's shape
- * or the order of its walk, and every walk (four lanes or two, packets
- * or single rays, any thread count) gives the same image. */
+ * the one of the lower key.  An unbounded shape's key is its place among
+ * the unbounded ones, a bounded shape's the number of unbounded ones plus
+ * its index in the scene: so the floor (and any unbounded quadric) wins a
+ * tie, as in POV-Ray (a glass cube standing on the floor: a ray inside it
+ * meets its bottom face and the floor at the same t, and goes on into the
+ * floor), and otherwise the shape earlier in the scene.  That is a plain
+ * loop's answer over the unbounded shapes and then the bounded ones, in
+ * the scene's order, with a strict comparison.  So the nearest hit does
+ * not depend on the tree's shape or the order of its walk, and every walk
+ * (four lanes or two, packets or single rays, any thread count) gives
+ * the same image. */
 struct accel {
 	struct bvh4_node *nodes;	/* the root first */
 	size_t n_nodes;
 	const struct shape **bounded;	/* in leaf order */
-	uint32_t *bounded_key;		/* each one's index in the scene */
+	uint32_t *bounded_key;		/* n_unbounded + each one's index in the scene */
 	size_t n_bounded;
 	const struct shape **unbounded;	/* in the scene's order */
-	uint32_t *unbounded_key;
+	uint32_t *unbounded_key;	/* 0, 1, ... */
 	size_t n_unbounded;
 	bool walk_avx2;		/* the walks of accel_walk_avx2.c, where the processor has it */
 };
