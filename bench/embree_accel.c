@@ -9,9 +9,11 @@
  * into whitted's double-precision shape_intersect, which keeps the nearest
  * hit in (t_min, t) exactly as whitted's traversal does, and Embree's
  * float tfar follows it (rounded up) to cull what lies beyond.  Unbounded
- * shapes are tested first, as in whitted.  Of two shapes hit at exactly the
- * same distance, the first tested wins; Embree's order may differ from
- * whitted's there, so bench.sh compares the images and says so. */
+ * shapes (and boxes past whitted's ACCEL_COORD_MAX) are tested first, as
+ * in whitted, and win an exact tie; of two bounded shapes hit at exactly
+ * the same distance, the one earlier in the scene wins (its primID), as
+ * in whitted (src/accel/accel_tree.h), whatever order Embree calls them
+ * in.  bench.sh still compares the images and says so. */
 #define _POSIX_C_SOURCE 200809L
 #include <embree3/rtcore.h>
 #include <math.h>
@@ -38,8 +40,27 @@ struct query {
 	const struct ray *r;
 	double t_min, t;
 	const struct shape *hit;
+	unsigned key;		/* the hit's primID */
 	bool blocked;
 };
+
+/* src/accel's accel_tree_box: what goes into the hierarchy. */
+static bool tree_box(const struct shape *s, struct aabb *box)
+{
+	const double m = 1e30;
+
+	return shape_bounds(s, box) && box->min.x >= -m && box->min.y >= -m && box->min.z >= -m &&
+	       box->max.x <= m && box->max.y <= m && box->max.z <= m && box->min.x <= m &&
+	       box->min.y <= m && box->min.z <= m && box->max.x >= -m && box->max.y >= -m &&
+	       box->max.z >= -m;
+}
+
+/* The least double above a hit's t (positive and finite here): the bound
+ * that lets a shape tie it. */
+static double next_up(double x)
+{
+	return x < INFINITY ? nextafter(x, INFINITY) : x;
+}
 
 static float pad_down(double v)
 {
@@ -81,10 +102,15 @@ static void embree_intersect(const struct RTCIntersectFunctionNArguments *args)
 	struct query *q = (struct query *)(void *)args->context;
 	const struct shape *sh = a->bounded[args->primID];
 
+	double t;
+
 	if (!args->valid[0])
 		return;
-	if (shape_intersect(sh, q->r, q->t_min, &q->t)) {
+	t = q->hit ? next_up(q->t) : q->t;
+	if (shape_intersect(sh, q->r, q->t_min, &t) && (t < q->t || args->primID < q->key)) {
+		q->t = t;
 		q->hit = sh;
+		q->key = args->primID;
 		*ray_tfar(args->rayhit) = pad_up(q->t);
 	}
 }
@@ -121,7 +147,7 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 	}
 	for (i = 0; i < n_shapes; i++) {
 		struct aabb box;
-		if (shape_bounds(shapes[i], &box))
+		if (tree_box(shapes[i], &box))
 			a->bounded[a->n_bounded++] = shapes[i];
 		else
 			a->unbounded[a->n_unbounded++] = shapes[i];
@@ -201,6 +227,7 @@ const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 	q.t_min = t_min;
 	q.t = *t_max;
 	q.hit = NULL;
+	q.key = 0;
 	memset(&rh, 0, sizeof(rh));
 	query_ray(&rh.ray, r, *t_max);
 	rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;

@@ -28,6 +28,26 @@
 #define ACCEL_PREFETCH 1
 #endif
 
+/* Asks for the memory of every child a ray enters before it uses any: a
+ * node's two lines, a leaf's first shape.  The walks wait mostly on
+ * loads that miss the cache (perf, gen-100k: the first box of a node
+ * and the first field of a leaf's shape); so they miss together instead
+ * of one after another. */
+static inline void prefetch_children(const struct accel *a, const struct bvh4_node *n,
+				     unsigned mask)
+{
+	for (; ACCEL_PREFETCH && mask; mask &= mask - 1) {
+		uintptr_t slot = n->slot[__builtin_ctz(mask)];
+		if (accel_slot_is_node(slot)) {
+			const char *p = (const char *)&a->nodes[accel_slot_index(slot)];
+			__builtin_prefetch(p);
+			__builtin_prefetch(p + 64);
+		} else if (accel_slot_tag(slot) > 0) {
+			__builtin_prefetch(a->bounded[accel_slot_index(slot)]);
+		}
+	}
+}
+
 /* The least double above x (x itself for +inf and NaN): the bound that
  * lets a shape's test report a hit at exactly x. */
 static inline double next_up(double x)
@@ -125,16 +145,13 @@ ACCEL_WALK(nearest_from)(const struct accel *a, size_t node, const struct walk_r
 
 		if (mask) {
 			int order[ACCEL_WIDTH], k = 1, count;
+			prefetch_children(a, n, (unsigned)mask);
 			if (mask & (mask - 1)) {
 				/* The farther children wait, farthest deepest. */
 				count = order_children(mask, e, order);
 				for (k = count - 1; k > 0; k--) {
 					stack[top].slot = n->slot[order[k]];
 					stack[top++].entry = e[order[k]];
-					if (ACCEL_PREFETCH && accel_slot_is_node(n->slot[order[k]])) {
-						__builtin_prefetch(&a->nodes[accel_slot_index(n->slot[order[k]])]);
-						__builtin_prefetch((const char *)&a->nodes[accel_slot_index(n->slot[order[k]])] + 64);
-					}
 				}
 			} else {
 				order[0] = __builtin_ctz((unsigned)mask);
@@ -200,15 +217,12 @@ ACCEL_WALK(occluded_from)(const struct accel *a, size_t node, const struct walk_
 		const struct bvh4_node *n = &a->nodes[stack[--top]];
 		unsigned mask = (unsigned)node_hits(n, v, t_min, t_max);
 
+		prefetch_children(a, n, mask);
 		for (; mask; mask &= mask - 1) {
 			uintptr_t slot = n->slot[__builtin_ctz(mask)];
-			if (accel_slot_is_node(slot)) {
+			if (accel_slot_is_node(slot))
 				stack[top++] = accel_slot_index(slot);
-				if (ACCEL_PREFETCH) {
-					__builtin_prefetch(&a->nodes[accel_slot_index(slot)]);
-					__builtin_prefetch((const char *)&a->nodes[accel_slot_index(slot)] + 64);
-				}
-			} else if (leaf_occluded(a, slot, r, t_min, t_max))
+			else if (leaf_occluded(a, slot, r, t_min, t_max))
 				return true;
 		}
 	}
