@@ -51,9 +51,9 @@ static inline void slab_t(const float *b, int off, __m128d o, __m128d inv, __m12
 }
 
 static inline void node_interval(const struct bvh4_node *node, const struct walk_ray *v,
-				 double t_min, double t_max, __m128d lo[2], __m128d hi[2])
+				 int h, double t_min, double t_max, __m128d lo[2], __m128d hi[2])
 {
-	const float *b = &node->lo[0][0];
+	const float *b = &node->lo[0][0] + 4 * h;
 	__m128d t01, t23;
 	int k;
 
@@ -73,22 +73,30 @@ static inline int node_entries(const struct bvh4_node *node, const struct walk_r
 			       double t_min, double t_max, double entry[ACCEL_WIDTH])
 {
 	__m128d lo[2], hi[2];
+	int mask = 0, h;
 
-	node_interval(node, v, t_min, t_max, lo, hi);
-	_mm_storeu_pd(entry, lo[0]);
-	_mm_storeu_pd(entry + 2, lo[1]);
-	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
-	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
+	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
+		node_interval(node, v, h, t_min, t_max, lo, hi);
+		_mm_storeu_pd(entry + 4 * h, lo[0]);
+		_mm_storeu_pd(entry + 4 * h + 2, lo[1]);
+		mask |= (_mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+			 _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2) << 4 * h;
+	}
+	return mask;
 }
 
 static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
 	__m128d lo[2], hi[2];
+	int mask = 0, h;
 
-	node_interval(node, v, t_min, t_max, lo, hi);
-	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
-	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
+	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
+		node_interval(node, v, h, t_min, t_max, lo, hi);
+		mask |= (_mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+			 _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2) << 4 * h;
+	}
+	return mask;
 }
 #else
 struct walk_ray {

@@ -39,6 +39,7 @@
  * (accel_collapse.c) is made from the slots, and the array then freed. */
 struct build {
 	struct build_ref *refs;
+	size_t refs_bytes;
 	struct bvh_node *nodes;
 	struct build_box box, centres;	/* of all the refs, found as they are made */
 };
@@ -248,7 +249,16 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 {
 	size_t i, n_unbounded;
 
-	b->refs = rt_reallocarray(NULL, n_shapes, sizeof(*b->refs));
+	/* The refs' memory takes the four-child tree once they are done
+	 * with (accel_collapse), so it is aligned for it and big enough for
+	 * any: a tree of L leaves has at most 3L/4 nodes (a node of two
+	 * children has two leaves; the others have three or more), 84 bytes
+	 * a leaf.  Half again the refs' 56 bytes a shape; the pages past the
+	 * refs are touched only by a tree that needs them. */
+	if (n_shapes > (SIZE_MAX / sizeof(*b->refs) - 2) / 3 * 2)
+		return -RT_E_NOMEM;
+	b->refs_bytes = (n_shapes + n_shapes / 2 + 2) * sizeof(*b->refs);
+	b->refs = rt_aligned_array(ACCEL_NODE_ALIGN, n_shapes + n_shapes / 2 + 2, sizeof(*b->refs));
 	if (!b->refs)
 		return -RT_E_NOMEM;
 	a->n_bounded = accel_collect_refs(b->refs, shapes, n_shapes, threads, &b->box, &b->centres);
@@ -270,12 +280,30 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 	return 0;
 }
 
+/* The shapes in leaf order and their keys (accel_tree.h), in one block:
+ * the pointers, then the keys.  0 or -RT_E_NOMEM. */
+static int leaf_order(struct accel *a, const struct build *b, struct shape *const *shapes)
+{
+	size_t n = a->n_bounded, i;
+	void *block = rt_reallocarray(NULL, n, sizeof(*a->bounded) + sizeof(*a->bounded_key));
+
+	if (!block)
+		return -RT_E_NOMEM;
+	a->bounded = block;
+	a->bounded_key = (uint32_t *)(void *)(a->bounded + n);
+	for (i = 0; i < n; i++) {
+		size_t index = b->refs[i].index;
+		a->bounded_key[i] = (uint32_t)(a->n_unbounded + index);
+		a->bounded[i] = shapes[index];
+	}
+	return 0;
+}
+
 int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struct accel **out,
 		struct diag *d)
 {
 	struct build b = { .refs = NULL, .nodes = NULL };
 	struct accel *a;
-	size_t i;
 
 	*out = NULL;
 	a = rt_calloc(1, sizeof(*a));
@@ -284,35 +312,32 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 	if (collect_refs(shapes, n_shapes, threads, a, &b) < 0)
 		goto out_free;
 	if (a->n_bounded > 0) {
-		const struct shape **leaf_order = (const struct shape **)(void *)b.refs;
 		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1;
-		/* One node a cache line: malloc's big blocks begin 16 bytes
-		 * into a page, which put three nodes in four across two lines
-		 * (a quarter fewer cache misses in the walk, measured with
-		 * cachegrind). */
-		b.nodes = rt_aligned_array(ACCEL_NODE_ALIGN, cap, sizeof(*b.nodes));
-		a->bounded_key = rt_reallocarray(NULL, a->n_bounded, sizeof(*a->bounded_key));
-		if (!b.nodes || !a->bounded_key)
+		int room;
+		b.nodes = rt_reallocarray(NULL, cap, sizeof(*b.nodes));
+		if (!b.nodes)
 			goto out_free;
 		build_root(&b, a->n_bounded, threads);
-		if (accel_collapse(a, b.nodes) < 0)
+		if (leaf_order(a, &b, shapes) < 0)
 			goto out_free;
+		/* The refs are done with: their memory takes the four-child
+		 * tree (collect_refs made it big enough), so that the build's
+		 * peak is the refs, the binary nodes and the leaf order, not
+		 * the tree besides. */
+		room = accel_collapse(a, b.nodes, a->n_bounded, threads, b.refs, b.refs_bytes);
+		if (room < 0)
+			goto out_free;
+		if (room)
+			b.refs = NULL;
+		{
+			struct bvh4_node *nodes = rt_aligned_shrink(a->nodes, ACCEL_NODE_ALIGN,
+								     a->n_nodes, sizeof(*a->nodes));
+			if (nodes)
+				a->nodes = nodes;
+		}
 		rt_free(b.nodes);
 		b.nodes = NULL;
 		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();
-		/* The shapes in leaf order go to the front of the refs' own
-		 * memory (pointer i lands before ref i is read, never on a ref
-		 * still to be read), which then shrinks: no third array at the
-		 * build's memory peak. */
-		for (i = 0; i < a->n_bounded; i++) {
-			size_t index = b.refs[i].index;
-			a->bounded_key[i] = (uint32_t)(a->n_unbounded + index);
-			leaf_order[i] = shapes[index];
-		}
-		a->bounded = rt_reallocarray(leaf_order, a->n_bounded, sizeof(*a->bounded));
-		if (!a->bounded)
-			a->bounded = leaf_order;
-		b.refs = NULL;
 	}
 	rt_free(b.refs);
 	*out = a;
@@ -330,8 +355,7 @@ void accel_destroy(struct accel *a)
 	if (!a)
 		return;
 	rt_free(a->nodes);
-	rt_free(a->bounded);
-	rt_free(a->bounded_key);
+	rt_free(a->bounded);	/* and bounded_key, in the same block */
 	rt_free(a->unbounded);
 	rt_free(a->unbounded_key);
 	rt_free(a);

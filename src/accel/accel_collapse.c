@@ -14,7 +14,9 @@
  * Deterministic: the same binary tree gives the same nodes in the same
  * order. */
 #include <math.h>
+#include <pthread.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "accel/accel_tree.h"
@@ -36,11 +38,17 @@ static float child_area(const struct wide_child *c)
 	return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
 }
 
-static void child_of(const struct bvh_node *node, int c, struct wide_child *out)
+/* Child c of a binary node; a child node's own memory is asked for at
+ * once, as it is soon opened or walked (the collapse waits mostly on
+ * those loads: a node's second child lies far from it). */
+static void child_of(const struct bvh_node *binary, const struct bvh_node *node, int c,
+		     struct wide_child *out)
 {
 	int k;
 
 	out->slot = node->slot[c];
+	if (accel_slot_is_node(out->slot))
+		__builtin_prefetch(&binary[accel_slot_index(out->slot)]);
 	for (k = 0; k < 3; k++) {
 		out->lo[k] = node->bounds[0][k][c];
 		out->hi[k] = node->bounds[1][k][c];
@@ -74,7 +82,7 @@ static int gather(const struct bvh_node *binary, size_t b, struct wide_child chi
 	/* The root of a tree that is one leaf has an empty child: left out. */
 	for (c = 0; c < 2; c++)
 		if (binary[b].slot[c] != 0)
-			child_of(&binary[b], c, &child[n++]);
+			child_of(binary, &binary[b], c, &child[n++]);
 	while (n < ACCEL_WIDTH) {
 		int open = -1;
 		float best = -1.0f;
@@ -91,9 +99,16 @@ static int gather(const struct bvh_node *binary, size_t b, struct wide_child chi
 		}
 		if (open < 0)
 			break;
+		/* Its two children take its place, in order: so the children
+		 * stay in the binary tree's depth-first order, which is the
+		 * order of its array, and the walk below reads that array
+		 * forwards (a stream, not a cache miss a node). */
 		b = accel_slot_index(child[open].slot);
-		child_of(&binary[b], 0, &child[open]);
-		child_of(&binary[b], 1, &child[n++]);
+		for (c = n; c > open + 1; c--)
+			child[c] = child[c - 1];
+		child_of(binary, &binary[b], 0, &child[open]);
+		child_of(binary, &binary[b], 1, &child[open + 1]);
+		n++;
 	}
 	return n;
 }
@@ -102,7 +117,6 @@ static void write_node(struct bvh4_node *node, const struct wide_child *child, i
 {
 	int c, k;
 
-	memset(node, 0, sizeof(*node));
 	for (c = 0; c < ACCEL_WIDTH; c++) {
 		for (k = 0; k < 3; k++) {
 			node->lo[k][c] = c < n ? child[c].lo[k] - pad : INFINITY;
@@ -112,49 +126,151 @@ static void write_node(struct bvh4_node *node, const struct wide_child *child, i
 	}
 }
 
-/* The number of four-child nodes, or their making into nodes[]: nodes in
- * depth-first order, a node's first child's subtree first. */
-static size_t collapse(const struct bvh_node *binary, struct bvh4_node *nodes)
+/* Makes nodes [first, last) of one level: each from the binary node its
+ * parent left in its slot[0], its node children's slots still naming
+ * binary nodes (the binary tree's own slots), to be numbered by
+ * number_children. */
+static void make_level(const struct bvh_node *binary, struct bvh4_node *nodes, size_t first,
+		       size_t last, float pad)
 {
-	float pad = tree_pad(&binary[0]);
-	struct { size_t b, parent; int c; } stack[ACCEL_STACK * ACCEL_WIDTH];
-	size_t next = 0;
-	int top = 0;
+	size_t i;
 
-	stack[top].b = 0;
-	stack[top].parent = 0;
-	stack[top++].c = -1;
-	while (top > 0) {
+	for (i = first; i < last; i++) {
 		struct wide_child child[ACCEL_WIDTH];
-		size_t index = next++;
 		int n, c;
 
-		top--;
-		n = gather(binary, stack[top].b, child);
-		if (nodes && stack[top].c >= 0)
-			nodes[stack[top].parent].slot[stack[top].c] =
-				accel_slot_make(index, ACCEL_SLOT_NODE);
-		if (nodes)
-			write_node(&nodes[index], child, n, pad);
-		for (c = n - 1; c >= 0; c--) {
-			if (!accel_slot_is_node(child[c].slot))
-				continue;
-			stack[top].b = accel_slot_index(child[c].slot);
-			stack[top].parent = index;
-			stack[top++].c = c;
+		/* The binary nodes of the coming turns, asked for ahead (the
+		 * pass waits mostly on those loads: a 56-megabyte array at 1M
+		 * shapes, a node's second child far from it), two stages
+		 * deep: a node's binary node eight turns ahead, its
+		 * children four turns ahead. */
+		if (i + 8 < last)
+			__builtin_prefetch(&binary[nodes[i + 8].slot[0]]);
+		if (i + 4 < last) {
+			const struct bvh_node *ahead = &binary[nodes[i + 4].slot[0]];
+			for (c = 0; c < 2; c++)
+				if (accel_slot_is_node(ahead->slot[c]))
+					__builtin_prefetch(&binary[accel_slot_index(ahead->slot[c])]);
 		}
+		n = gather(binary, nodes[i].slot[0], child);
+		write_node(&nodes[i], child, n, pad);
 	}
+}
+
+/* The node children of nodes [first, last), numbered from `next` in
+ * order: each child's slot then names it, and its slot[0] the binary node
+ * it is made from.  Returns the next number. */
+static size_t number_children(struct bvh4_node *nodes, size_t first, size_t last, size_t next)
+{
+	size_t i;
+	int c;
+
+	for (i = first; i < last; i++)
+		for (c = 0; c < ACCEL_WIDTH; c++) {
+			uintptr_t slot = nodes[i].slot[c];
+			if (!accel_slot_is_node(slot))
+				continue;
+			nodes[next].slot[0] = (uint32_t)accel_slot_index(slot);
+			nodes[i].slot[c] = (uint32_t)accel_slot_make(next++, ACCEL_SLOT_NODE);
+		}
 	return next;
 }
 
-int accel_collapse(struct accel *a, const struct bvh_node *binary)
+static size_t count_children(const struct bvh4_node *nodes, size_t first, size_t last)
 {
-	size_t count;
+	size_t i, n = 0;
+	int c;
 
-	count = collapse(binary, NULL);
-	a->nodes = rt_aligned_array(ACCEL_NODE_ALIGN, count, sizeof(*a->nodes));
+	for (i = first; i < last; i++)
+		for (c = 0; c < ACCEL_WIDTH; c++)
+			n += accel_slot_is_node(nodes[i].slot[c]);
+	return n;
+}
+
+/* A level's second half, made by a thread of its own. */
+struct level_half {
+	const struct bvh_node *binary;
+	struct bvh4_node *nodes;
+	size_t first, last, next;
+	float pad;
+	bool number;		/* false: make the nodes; true: number their children */
+};
+
+static void *level_half_run(void *arg)
+{
+	struct level_half *h = arg;
+
+	if (h->number)
+		number_children(h->nodes, h->first, h->last, h->next);
+	else
+		make_level(h->binary, h->nodes, h->first, h->last, h->pad);
+	return NULL;
+}
+
+/* Runs h's work on a thread of its own and `self` on this one, or both
+ * here when no thread can be had: the same nodes either way. */
+static void split_level(struct level_half *self, struct level_half *h)
+{
+	pthread_t t;
+	bool started = pthread_create(&t, NULL, level_half_run, h) == 0;
+
+	level_half_run(self);
+	if (started)
+		pthread_join(t, NULL);
+	else
+		level_half_run(h);
+}
+
+/* Levels this big are made by two threads. */
+#define COLLAPSE_PARALLEL_MIN 8192
+
+/* The four-child nodes in breadth-first order, level by level, the
+ * children of a node side by side, into nodes[] (room for any tree of its
+ * leaves): node i made from the binary node its parent left in its
+ * slot[0].  Breadth first, the binary nodes a level reads are known
+ * before it starts, so they are asked for ahead; a big level is made by
+ * two threads, each half's children numbered after the first half's, so
+ * the nodes are the same for any thread count.  Returns the node count. */
+static size_t collapse(const struct bvh_node *binary, struct bvh4_node *nodes, int threads)
+{
+	float pad = tree_pad(&binary[0]);
+	size_t first = 0, last = 1;
+
+	nodes[0].slot[0] = 0;
+	while (first < last) {
+		size_t next;
+		if (threads > 1 && last - first >= COLLAPSE_PARALLEL_MIN) {
+			size_t mid = first + (last - first) / 2;
+			struct level_half lo = { binary, nodes, first, mid, 0, pad, false };
+			struct level_half hi = { binary, nodes, mid, last, 0, pad, false };
+			split_level(&lo, &hi);
+			lo.number = hi.number = true;
+			lo.next = last;
+			hi.next = last + count_children(nodes, first, mid);
+			split_level(&lo, &hi);
+			next = hi.next + count_children(nodes, mid, last);
+		} else {
+			make_level(binary, nodes, first, last, pad);
+			next = number_children(nodes, first, last, last);
+		}
+		first = last;
+		last = next;
+	}
+	return last;
+}
+
+int accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
+		   void *room, size_t room_bytes)
+{
+	/* A tree of L leaves has at most 3L/4 + 1 nodes (a node of two
+	 * children has two leaves; the others have three or more). */
+	size_t most = leaves / 4 * 3 + 2;
+	int in_room = room && (uintptr_t)room % ACCEL_NODE_ALIGN == 0 &&
+		      most <= room_bytes / sizeof(*a->nodes);
+
+	a->nodes = in_room ? room : rt_aligned_array(ACCEL_NODE_ALIGN, most, sizeof(*a->nodes));
 	if (!a->nodes)
 		return -RT_E_NOMEM;
-	a->n_nodes = collapse(binary, a->nodes);
-	return 0;
+	a->n_nodes = collapse(binary, a->nodes, threads);
+	return in_room;
 }

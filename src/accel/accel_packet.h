@@ -109,9 +109,9 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 	}
 	while (top > 0) {
 		const struct bvh4_node *nd;
-		uint32_t mask, child[ACCEL_WIDTH] = { 0, 0, 0, 0 }, m;
+		uint32_t mask, child[ACCEL_WIDTH] = { 0 }, m;
 		double e[ACCEL_WIDTH], first[ACCEL_WIDTH];
-		int order[ACCEL_WIDTH], count, k, lead = -1;
+		int order[ACCEL_WIDTH], count, k, lead = -1, hits_any;
 		uintptr_t slot;
 
 		top--;
@@ -145,9 +145,9 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 			continue;
 		/* The children in the lead ray's order, the ones it misses
 		 * last; pushed farthest first. */
-		count = order_children((child[0] != 0) | (child[1] != 0) << 1 | (child[2] != 0) << 2 |
-					       (child[3] != 0) << 3,
-				       first, order);
+		for (k = 0, hits_any = 0; k < ACCEL_WIDTH; k++)
+			hits_any |= (child[k] != 0) << k;
+		count = order_children(hits_any, first, order);
 		for (k = count - 1; k >= 0; k--) {
 			stack[top].slot = nd->slot[order[k]];
 			stack[top++].mask = child[order[k]];
@@ -186,7 +186,7 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 	stack[top++].mask = open;
 	while (top > 0) {
 		const struct bvh4_node *nd;
-		uint32_t mask, child[ACCEL_WIDTH] = { 0, 0, 0, 0 }, m;
+		uint32_t mask, child[ACCEL_WIDTH] = { 0 }, m;
 		int c;
 
 		top--;

@@ -50,19 +50,23 @@ static inline uintptr_t accel_slot_make(size_t index, unsigned tag)
 	return (uintptr_t)index << 3 | tag;
 }
 
-/* The node arrays' alignment: a cache line. */
+/* The four-child node array's alignment: a cache line. */
 #define ACCEL_NODE_ALIGN 64
 
 /* The build's binary node: bounds[side][axis][child], side 0 the
- * minimum, 1 the maximum. */
+ * minimum, 1 the maximum.  No walk reads it, so it is packed (56 bytes,
+ * not a cache line): it and the four-child tree coexist at the build's
+ * memory peak. */
 struct bvh_node {
 	float bounds[2][3][2];
-	uintptr_t slot[2];
+	uint32_t slot[2];
 };
 
 #define ACCEL_WIDTH 4
 
-/* The walks' node, two cache lines: lo[axis][child] and hi[axis][child],
+/* The walks' node, 112 bytes (nodes side by side in an array aligned to
+ * a cache line: padded to 128, the tree did not fit in the build's refs,
+ * and the walks were no faster): lo[axis][child] and hi[axis][child],
  * the children's float boxes (the binary tree's, widened: see
  * accel_collapse.c), side by side so that one four-lane operation takes a
  * plane of all four.  An empty child has lo +inf and hi -inf on every
@@ -72,7 +76,6 @@ struct bvh_node {
 struct bvh4_node {
 	float lo[3][ACCEL_WIDTH], hi[3][ACCEL_WIDTH];
 	uint32_t slot[ACCEL_WIDTH];
-	uint32_t pad[4];
 };
 
 /* Which shape wins an exact tie, whatever order a walk meets them in:
@@ -100,8 +103,13 @@ struct accel {
 };
 
 /* Builds a->nodes and a->n_nodes, the four-child tree, from the binary
- * one (its root at 0).  0 or -RT_E_NOMEM. */
-int accel_collapse(struct accel *a, const struct bvh_node *binary);
+ * one (its root at 0, `leaves` leaves), with up to `threads` threads (the
+ * same tree for any number): in room (room_bytes, aligned to
+ * ACCEL_NODE_ALIGN, the caller's to give up) when any tree of that many
+ * leaves fits there, returning 1, else in memory of its own, returning 0;
+ * -RT_E_NOMEM. */
+int accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
+		   void *room, size_t room_bytes);
 
 /* The walks with AVX2 box tests (accel_walk_avx2.c): the same nodes in
  * the same order with the same arithmetic, so the same hits.  Usable only

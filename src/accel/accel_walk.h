@@ -22,8 +22,8 @@
 #ifndef RT_ACCEL_WALK_COMMON
 #define RT_ACCEL_WALK_COMMON
 
-/* At most three children wait for each node on the path down. */
-#define ACCEL_WALK_STACK (3 * ACCEL_STACK)
+/* At most ACCEL_WIDTH - 1 children wait for each node on the path down. */
+#define ACCEL_WALK_STACK ((ACCEL_WIDTH - 1) * ACCEL_STACK)
 #ifndef ACCEL_PREFETCH
 #define ACCEL_PREFETCH 1
 #endif

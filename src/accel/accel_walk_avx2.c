@@ -39,11 +39,11 @@ static inline __m256d slab_t(const float *b, int off, __m256d o, __m256d inv)
 	return _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_load_ps(b + off)), o), inv);
 }
 
-/* The entries, and the mask of the children entered as 4 bits. */
+/* The entries of children 4h .. 4h + 3, and the mask of those entered. */
 static inline __m256d node_interval(const struct bvh4_node *node, const struct walk_ray *v,
-				    double t_min, double t_max, int *mask)
+				    int h, double t_min, double t_max, int *mask)
 {
-	const float *b = &node->lo[0][0];
+	const float *b = &node->lo[0][0] + 4 * h;
 	__m256d lo = _mm256_set1_pd(t_min), hi = _mm256_set1_pd(t_max);
 
 	lo = _mm256_max_pd(slab_t(b, v->near_off[0], v->o[0], v->inv[0]), lo);
@@ -59,18 +59,24 @@ static inline __m256d node_interval(const struct bvh4_node *node, const struct w
 static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
 			       double t_min, double t_max, double entry[ACCEL_WIDTH])
 {
-	int mask;
+	int mask = 0, m, h;
 
-	_mm256_storeu_pd(entry, node_interval(node, v, t_min, t_max, &mask));
+	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
+		_mm256_storeu_pd(entry + 4 * h, node_interval(node, v, h, t_min, t_max, &m));
+		mask |= m << 4 * h;
+	}
 	return mask;
 }
 
 static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
-	int mask;
+	int mask = 0, m, h;
 
-	(void)node_interval(node, v, t_min, t_max, &mask);
+	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
+		(void)node_interval(node, v, h, t_min, t_max, &m);
+		mask |= m << 4 * h;
+	}
 	return mask;
 }
 
