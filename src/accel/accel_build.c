@@ -253,12 +253,17 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 	 * with (accel_collapse), so it is aligned for it and big enough for
 	 * any: a tree of L leaves has at most 3L/4 nodes (a node of two
 	 * children has two leaves; the others have three or more), 84 bytes
-	 * a leaf.  Half again the refs' 56 bytes a shape; the pages past the
-	 * refs are touched only by a tree that needs them. */
-	if (n_shapes > (SIZE_MAX / sizeof(*b->refs) - 2) / 3 * 2)
+	 * a leaf against the refs' 56 bytes a shape; the pages past the refs
+	 * are touched only by a tree that needs them. */
+	size_t tree = n_shapes / 4 * 3 + 2, count;
+
+	if (tree > SIZE_MAX / sizeof(struct bvh4_node))
 		return -RT_E_NOMEM;
-	b->refs_bytes = (n_shapes + n_shapes / 2 + 2) * sizeof(*b->refs);
-	b->refs = rt_aligned_array(ACCEL_NODE_ALIGN, n_shapes + n_shapes / 2 + 2, sizeof(*b->refs));
+	count = (tree * sizeof(struct bvh4_node) + sizeof(*b->refs) - 1) / sizeof(*b->refs);
+	if (count < n_shapes)
+		count = n_shapes;
+	b->refs = rt_aligned_array(ACCEL_NODE_ALIGN, count, sizeof(*b->refs));
+	b->refs_bytes = count * sizeof(*b->refs);
 	if (!b->refs)
 		return -RT_E_NOMEM;
 	a->n_bounded = accel_collect_refs(b->refs, shapes, n_shapes, threads, &b->box, &b->centres);
@@ -313,7 +318,7 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 		goto out_free;
 	if (a->n_bounded > 0) {
 		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1;
-		int room;
+		struct bvh4_node *nodes;
 		b.nodes = rt_reallocarray(NULL, cap, sizeof(*b.nodes));
 		if (!b.nodes)
 			goto out_free;
@@ -324,17 +329,11 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 		 * tree (collect_refs made it big enough), so that the build's
 		 * peak is the refs, the binary nodes and the leaf order, not
 		 * the tree besides. */
-		room = accel_collapse(a, b.nodes, a->n_bounded, threads, b.refs, b.refs_bytes);
-		if (room < 0)
-			goto out_free;
-		if (room)
-			b.refs = NULL;
-		{
-			struct bvh4_node *nodes = rt_aligned_shrink(a->nodes, ACCEL_NODE_ALIGN,
-								     a->n_nodes, sizeof(*a->nodes));
-			if (nodes)
-				a->nodes = nodes;
-		}
+		accel_collapse(a, b.nodes, a->n_bounded, threads, b.refs, b.refs_bytes);
+		b.refs = NULL;
+		nodes = rt_aligned_shrink(a->nodes, ACCEL_NODE_ALIGN, a->n_nodes, sizeof(*a->nodes));
+		if (nodes)
+			a->nodes = nodes;
 		rt_free(b.nodes);
 		b.nodes = NULL;
 		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();

@@ -13,6 +13,7 @@
  * lies that far outside its shape's box, and no box test costs more.
  * Deterministic: the same binary tree gives the same nodes in the same
  * order. */
+#include <assert.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdbool.h>
@@ -20,8 +21,6 @@
 #include <string.h>
 
 #include "accel/accel_tree.h"
-#include "base/alloc.h"
-#include "whitted/diag.h"
 
 struct wide_child {
 	uintptr_t slot;
@@ -259,18 +258,15 @@ static size_t collapse(const struct bvh_node *binary, struct bvh4_node *nodes, i
 	return last;
 }
 
-int accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
-		   void *room, size_t room_bytes)
+void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
+		    void *room, size_t room_bytes)
 {
 	/* A tree of L leaves has at most 3L/4 + 1 nodes (a node of two
 	 * children has two leaves; the others have three or more). */
-	size_t most = leaves / 4 * 3 + 2;
-	int in_room = room && (uintptr_t)room % ACCEL_NODE_ALIGN == 0 &&
-		      most <= room_bytes / sizeof(*a->nodes);
-
-	a->nodes = in_room ? room : rt_aligned_array(ACCEL_NODE_ALIGN, most, sizeof(*a->nodes));
-	if (!a->nodes)
-		return -RT_E_NOMEM;
+	assert(room && (uintptr_t)room % ACCEL_NODE_ALIGN == 0 &&
+	       leaves / 4 * 3 + 2 <= room_bytes / sizeof(*a->nodes));
+	(void)leaves;
+	(void)room_bytes;
+	a->nodes = room;
 	a->n_nodes = collapse(binary, a->nodes, threads);
-	return in_room;
 }

@@ -104,12 +104,11 @@ struct accel {
 
 /* Builds a->nodes and a->n_nodes, the four-child tree, from the binary
  * one (its root at 0, `leaves` leaves), with up to `threads` threads (the
- * same tree for any number): in room (room_bytes, aligned to
- * ACCEL_NODE_ALIGN, the caller's to give up) when any tree of that many
- * leaves fits there, returning 1, else in memory of its own, returning 0;
- * -RT_E_NOMEM. */
-int accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
-		   void *room, size_t room_bytes);
+ * same tree for any number), in room: room_bytes aligned to
+ * ACCEL_NODE_ALIGN, enough for any tree of that many leaves (3L/4 + 2
+ * nodes), which a->nodes then owns. */
+void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
+		    void *room, size_t room_bytes);
 
 /* The walks with AVX2 box tests (accel_walk_avx2.c): the same nodes in
  * the same order with the same arithmetic, so the same hits.  Usable only
