@@ -336,6 +336,7 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 			a->nodes = nodes;
 		rt_free(b.nodes);
 		b.nodes = NULL;
+		rt_release_free_memory();
 		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();
 	}
 	rt_free(b.refs);

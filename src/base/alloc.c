@@ -7,6 +7,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "base/alloc.h"
 
@@ -112,6 +115,13 @@ void *rt_aligned_shrink(void *p, size_t align, size_t count, size_t size)
 void rt_free(void *p)
 {
 	free(p);
+}
+
+void rt_release_free_memory(void)
+{
+#if defined(__GLIBC__)
+	malloc_trim(0);
+#endif
 }
 
 char *rt_strdup(const char *s)

@@ -19,6 +19,10 @@ void *rt_aligned_array(size_t align, size_t count, size_t size);
  * aligned one could be had (then the moved, unaligned block). */
 void *rt_aligned_shrink(void *p, size_t align, size_t count, size_t size);
 void rt_free(void *p);
+/* Gives the pages of freed memory back to the system where the C library
+ * can (glibc's malloc_trim), so that a big phase's temporaries (the
+ * hierarchy's build) do not stay resident under the next phase. */
+void rt_release_free_memory(void);
 char *rt_strdup(const char *s);
 
 /* Test hook: the allocation numbered n (1-based, counted from this call)
