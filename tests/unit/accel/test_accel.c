@@ -509,6 +509,24 @@ static void test_accel_threads_build_the_same_tree(void **state)
 	scene_destroy(s);
 }
 
+/* A tree big enough that its wide levels (8192 nodes and more) are made
+ * by two threads in the collapse: the same nodes for any thread count,
+ * and a sound tree. */
+static void test_accel_threads_collapse_the_same_tree(void **state)
+{
+	struct scene *s = scene_create("wide levels");
+	int i;
+
+	(void)state;
+	support_rng_seed(78);
+	for (i = 0; i < 120000; i++)
+		add(s, sphere_create(support_random_point(400), support_uniform(0.2, 2), &mat));
+	assert_same_tree_for_threads(s);
+	assert_true(s->accel->n_nodes >= 3 * 8192);
+	assert_tree_sound(s);
+	scene_destroy(s);
+}
+
 static void test_accel_threads_median_splits(void **state)
 {
 	struct scene *s = scene_create("stack");
@@ -953,6 +971,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_accel_rays_grazing_clip_faces),
 		cmocka_unit_test(test_accel_threads_build_the_same_tree),
 		cmocka_unit_test(test_accel_threads_median_splits),
+		cmocka_unit_test(test_accel_threads_collapse_the_same_tree),
 		cmocka_unit_test(test_accel_ties_go_to_the_first_in_the_scene),
 		cmocka_unit_test(test_accel_solids_on_the_floor_tie_at_their_edges),
 		cmocka_unit_test(test_accel_huge_boxes_are_tested_by_every_ray),
