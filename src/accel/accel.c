@@ -1,15 +1,21 @@
 /* Queries on the bounding volume hierarchy (built by accel_build.c and
  * accel_collapse.c) and the list of unbounded shapes that every ray
- * tests: the walks of accel_walk.h and accel_packet.h with SSE2 box tests
- * (or plain C ones in the portable build), and the choice between them
- * and the AVX2 ones.  Nothing here allocates or locks per ray. */
+ * tests: the walks of accel_walk.h and accel_packet.h over four-child
+ * nodes with SSE2 box tests (or plain C ones in the portable build), and
+ * the choice between them and the AVX2 and AVX-512 ones over eight-child
+ * nodes.  Nothing here allocates or locks per ray. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "accel/accel.h"
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
+
+#define ACCEL_NODE struct bvh4_node
+#define ACCEL_W 4
 
 /* A node's four children are tested at once: child c is entered when
  *   entry = max(t_min, (near_k - o_k) / d_k) <= exit = min(t_max, (far_k - o_k) / d_k)
@@ -35,8 +41,8 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 	for (k = 0; k < 3; k++) {
 		v->o[k] = _mm_set1_pd(rs->o[k]);
 		v->inv[k] = _mm_set1_pd(rs->inv[k]);
-		v->near_off[k] = rs->near[k] * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
-		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
+		v->near_off[k] = rs->near[k] * 3 * ACCEL_W + ACCEL_W * k;
+		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_W + ACCEL_W * k;
 	}
 }
 
@@ -51,9 +57,9 @@ static inline void slab_t(const float *b, int off, __m128d o, __m128d inv, __m12
 }
 
 static inline void node_interval(const struct bvh4_node *node, const struct walk_ray *v,
-				 int h, double t_min, double t_max, __m128d lo[2], __m128d hi[2])
+				 double t_min, double t_max, __m128d lo[2], __m128d hi[2])
 {
-	const float *b = &node->lo[0][0] + 4 * h;
+	const float *b = &node->lo[0][0];
 	__m128d t01, t23;
 	int k;
 
@@ -70,33 +76,25 @@ static inline void node_interval(const struct bvh4_node *node, const struct walk
 }
 
 static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
-			       double t_min, double t_max, double entry[ACCEL_WIDTH])
+			       double t_min, double t_max, double entry[4])
 {
 	__m128d lo[2], hi[2];
-	int mask = 0, h;
 
-	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
-		node_interval(node, v, h, t_min, t_max, lo, hi);
-		_mm_storeu_pd(entry + 4 * h, lo[0]);
-		_mm_storeu_pd(entry + 4 * h + 2, lo[1]);
-		mask |= (_mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
-			 _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2) << 4 * h;
-	}
-	return mask;
+	node_interval(node, v, t_min, t_max, lo, hi);
+	_mm_storeu_pd(entry, lo[0]);
+	_mm_storeu_pd(entry + 2, lo[1]);
+	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
 }
 
 static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
 	__m128d lo[2], hi[2];
-	int mask = 0, h;
 
-	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
-		node_interval(node, v, h, t_min, t_max, lo, hi);
-		mask |= (_mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
-			 _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2) << 4 * h;
-	}
-	return mask;
+	node_interval(node, v, t_min, t_max, lo, hi);
+	return _mm_movemask_pd(_mm_cmple_pd(lo[0], hi[0])) |
+	       _mm_movemask_pd(_mm_cmple_pd(lo[1], hi[1])) << 2;
 }
 #else
 struct walk_ray {
@@ -109,12 +107,12 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 }
 
 static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
-			       double t_min, double t_max, double entry[ACCEL_WIDTH])
+			       double t_min, double t_max, double entry[4])
 {
 	const struct ray_slab *rs = &v->rs;
 	int c, k, mask = 0;
 
-	for (c = 0; c < ACCEL_WIDTH; c++) {
+	for (c = 0; c < 4; c++) {
 		double lo = t_min, hi = t_max;
 		for (k = 0; k < 3; k++) {
 			double b0 = rs->near[k] ? node->hi[k][c] : node->lo[k][c];
@@ -133,7 +131,7 @@ static inline int node_entries(const struct bvh4_node *node, const struct walk_r
 static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
-	double e[ACCEL_WIDTH];
+	double e[4];
 
 	return node_entries(node, v, t_min, t_max, e);
 }
@@ -146,48 +144,92 @@ static inline int node_hits(const struct bvh4_node *node, const struct walk_ray 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 				    double t_min, double *t_max)
 {
-	if (a->walk_avx2)
+	switch (a->walk) {
+	case ACCEL_WALK_AVX512:
+		return accel_avx512_intersect(a, r, t_min, t_max);
+	case ACCEL_WALK_AVX2:
 		return accel_avx2_intersect(a, r, t_min, t_max);
-	return walk_sse2_intersect(a, r, t_min, t_max);
+	default:
+		return walk_sse2_intersect(a, r, t_min, t_max);
+	}
 }
 
 bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
 {
-	if (a->walk_avx2)
+	switch (a->walk) {
+	case ACCEL_WALK_AVX512:
+		return accel_avx512_occluded(a, r, t_min, t_max);
+	case ACCEL_WALK_AVX2:
 		return accel_avx2_occluded(a, r, t_min, t_max);
-	return walk_sse2_occluded(a, r, t_min, t_max);
+	default:
+		return walk_sse2_occluded(a, r, t_min, t_max);
+	}
 }
 
 void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 			    const double *t_min, double *t_max, const struct shape **hit)
 {
-	if (a->walk_avx2)
+	switch (a->walk) {
+	case ACCEL_WALK_AVX512:
+		accel_avx512_intersect_packet(a, r, n, t_min, t_max, hit);
+		break;
+	case ACCEL_WALK_AVX2:
 		accel_avx2_intersect_packet(a, r, n, t_min, t_max, hit);
-	else
+		break;
+	default:
 		walk_sse2_intersect_packet(a, r, n, t_min, t_max, hit);
+	}
 }
 
 uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
 			       const double *t_min, const double *t_max)
 {
-	if (a->walk_avx2)
+	switch (a->walk) {
+	case ACCEL_WALK_AVX512:
+		return accel_avx512_occluded_packet(a, r, n, t_min, t_max);
+	case ACCEL_WALK_AVX2:
 		return accel_avx2_occluded_packet(a, r, n, t_min, t_max);
-	return walk_sse2_occluded_packet(a, r, n, t_min, t_max);
+	default:
+		return walk_sse2_occluded_packet(a, r, n, t_min, t_max);
+	}
 }
 
 bool accel_packets_pay(const struct accel *a)
 {
-	return a->walk_avx2;
+	return a->walk != ACCEL_WALK_BASE;
 }
 
 const char *accel_walk_name(const struct accel *a)
 {
+	if (a && a->walk == ACCEL_WALK_AVX512)
+		return "avx512";
+	if (a && a->walk == ACCEL_WALK_AVX2)
+		return "avx2";
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
-	return a && a->walk_avx2 ? "avx2" : "sse2";
+	return "sse2";
 #else
-	(void)a;
 	return "portable";
 #endif
+}
+
+/* WHITTED_ISA caps the walks (sse2, avx2, avx512; unset: the widest the
+ * processor has), to compare them on one machine. */
+bool accel_walk_usable(enum accel_walk w)
+{
+	const char *isa = getenv("WHITTED_ISA");
+
+	switch (w) {
+	case ACCEL_WALK_AVX512:
+		if (isa && (strcmp(isa, "sse2") == 0 || strcmp(isa, "avx2") == 0))
+			return false;
+		return accel_avx512_cpu();
+	case ACCEL_WALK_AVX2:
+		if (isa && strcmp(isa, "sse2") == 0)
+			return false;
+		return accel_avx2_cpu();
+	default:
+		return true;
+	}
 }
 
 size_t accel_node_count(const struct accel *a)
@@ -199,6 +241,6 @@ size_t accel_bytes(const struct accel *a)
 {
 	if (!a)
 		return 0;
-	return sizeof(*a) + a->n_nodes * sizeof(*a->nodes) +
+	return sizeof(*a) + a->n_nodes * accel_node_bytes(accel_walk_width(a->walk)) +
 	       (a->n_bounded + a->n_unbounded) * (sizeof(const struct shape *) + sizeof(uint32_t));
 }

@@ -21,12 +21,14 @@
  * saves. */
 #define ACCEL_PARALLEL_MIN 4096
 
-/* The AVX2 walks save a few instructions a node but cost more to set up
- * a ray (six 256-bit values, the upper halves cleared around every shape
- * test's call): a small tree, whose rays visit a handful of nodes, keeps
- * the SSE2 ones (callgrind, the course example of 6 nodes: 15% more
- * instructions with AVX2). */
-#define ACCEL_AVX2_MIN_NODES 256
+/* The AVX2 and AVX-512 walks save instructions a node but cost more to
+ * set up a ray (six wide values, the upper halves cleared around every
+ * shape test's call), and eight children a node cost more than four to
+ * order: a small scene, whose rays visit a handful of nodes, keeps the
+ * SSE2 walks over four children (callgrind, the course example of 6
+ * shapes: 15% more instructions with AVX2; its render 1.13x the time with
+ * eight children and AVX-512). */
+#define ACCEL_SIMD_MIN_SHAPES 512
 
 
 /* The build writes every node in place, into an array allocated once: the
@@ -38,8 +40,9 @@
  * The indices that bigger leaves leave unused stay unused: the walks' tree
  * (accel_collapse.c) is made from the slots, and the array then freed. */
 struct build {
-	struct build_ref *refs;
+	struct build_ref *refs;	/* then the wide tree (see collect_refs) */
 	size_t refs_bytes;
+	uint32_t *order;	/* the refs' shapes in leaf order, at the end of refs' block */
 	struct bvh_node *nodes;
 	struct build_box box, centres;	/* of all the refs, found as they are made */
 };
@@ -244,28 +247,29 @@ static void build_root(struct build *b, size_t n, int threads)
 
 /* The refs of the bounded shapes, in the scene's order, with their box and
  * centre bounds, and the list of the unbounded ones. */
-static int collect_refs(struct shape *const *shapes, size_t n_shapes, int threads, struct accel *a,
-			struct build *b)
+static int collect_refs(struct shape *const *shapes, size_t n_shapes, int threads, int width,
+			struct accel *a, struct build *b)
 {
-	size_t i, n_unbounded;
+	size_t i, n_unbounded, tree, count, bytes;
 
-	/* The refs' memory takes the four-child tree once they are done
-	 * with (accel_collapse), so it is aligned for it and big enough for
-	 * any: a tree of L leaves has at most 3L/4 nodes (a node of two
-	 * children has two leaves; the others have three or more), 84 bytes
-	 * a leaf against the refs' 56 bytes a shape; the pages past the refs
-	 * are touched only by a tree that needs them. */
-	size_t tree = n_shapes / 4 * 3 + 2, count;
-
-	if (tree > SIZE_MAX / sizeof(struct bvh4_node))
+	/* The refs' block takes the wide tree once they are done with
+	 * (accel_collapse), so it is aligned for it and big enough for any
+	 * (accel_collapse_room), and past both it keeps the leaf order's
+	 * shape indices (b->order) while the binary nodes and the tree
+	 * coexist: the pages of the room that the tree does not need are
+	 * never touched. */
+	tree = accel_collapse_room(n_shapes, width);
+	if (tree > SIZE_MAX / 2 / accel_node_bytes(width) || n_shapes > SIZE_MAX / 2 / 64)
 		return -RT_E_NOMEM;
-	count = (tree * sizeof(struct bvh4_node) + sizeof(*b->refs) - 1) / sizeof(*b->refs);
-	if (count < n_shapes)
-		count = n_shapes;
+	bytes = tree * accel_node_bytes(width);
+	if (bytes < n_shapes * sizeof(*b->refs))
+		bytes = n_shapes * sizeof(*b->refs);
+	count = (bytes + n_shapes * sizeof(*b->order) + sizeof(*b->refs) - 1) / sizeof(*b->refs);
 	b->refs = rt_aligned_array(ACCEL_NODE_ALIGN, count, sizeof(*b->refs));
-	b->refs_bytes = count * sizeof(*b->refs);
 	if (!b->refs)
 		return -RT_E_NOMEM;
+	b->refs_bytes = bytes;
+	b->order = (uint32_t *)(void *)((char *)b->refs + bytes);
 	a->n_bounded = accel_collect_refs(b->refs, shapes, n_shapes, threads, &b->box, &b->centres);
 	n_unbounded = n_shapes - a->n_bounded;
 	a->unbounded = rt_reallocarray(NULL, n_unbounded, sizeof(*a->unbounded));
@@ -286,7 +290,10 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 }
 
 /* The shapes in leaf order and their keys (accel_tree.h), in one block:
- * the pointers, then the keys.  0 or -RT_E_NOMEM. */
+ * the pointers, then the keys; from b->order, made once the binary nodes
+ * are freed, so that the tree, the binary nodes and this block are never
+ * all resident at once (gen-1M: 11.4 MiB off the build's peak).  0 or
+ * -RT_E_NOMEM. */
 static int leaf_order(struct accel *a, const struct build *b, struct shape *const *shapes)
 {
 	size_t n = a->n_bounded, i;
@@ -297,47 +304,72 @@ static int leaf_order(struct accel *a, const struct build *b, struct shape *cons
 	a->bounded = block;
 	a->bounded_key = (uint32_t *)(void *)(a->bounded + n);
 	for (i = 0; i < n; i++) {
-		size_t index = b->refs[i].index;
+		size_t index = b->order[i];
 		a->bounded_key[i] = (uint32_t)(a->n_unbounded + index);
 		a->bounded[i] = shapes[index];
 	}
 	return 0;
 }
 
+/* The walks for a scene of n_shapes: the widest the processor has, for
+ * a scene big enough to pay for them. */
+static enum accel_walk choose_walk(size_t n_shapes)
+{
+	if (n_shapes < ACCEL_SIMD_MIN_SHAPES)
+		return ACCEL_WALK_BASE;
+	if (accel_walk_usable(ACCEL_WALK_AVX512))
+		return ACCEL_WALK_AVX512;
+	if (accel_walk_usable(ACCEL_WALK_AVX2))
+		return ACCEL_WALK_AVX2;
+	return ACCEL_WALK_BASE;
+}
+
 int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struct accel **out,
 		struct diag *d)
 {
+	return accel_build_walk(shapes, n_shapes, threads, choose_walk(n_shapes), out, d);
+}
+
+int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
+		     enum accel_walk walk, struct accel **out, struct diag *d)
+{
 	struct build b = { .refs = NULL, .nodes = NULL };
+	int width = accel_walk_width(walk);
 	struct accel *a;
 
 	*out = NULL;
 	a = rt_calloc(1, sizeof(*a));
 	if (!a)
 		goto out_nomem;
-	if (collect_refs(shapes, n_shapes, threads, a, &b) < 0)
+	a->walk = walk;
+	if (collect_refs(shapes, n_shapes, threads, width, a, &b) < 0)
 		goto out_free;
 	if (a->n_bounded > 0) {
-		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1;
-		struct bvh4_node *nodes;
+		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1, i;
+		void *nodes;
 		b.nodes = rt_reallocarray(NULL, cap, sizeof(*b.nodes));
 		if (!b.nodes)
 			goto out_free;
 		build_root(&b, a->n_bounded, threads);
-		if (leaf_order(a, &b, shapes) < 0)
-			goto out_free;
-		/* The refs are done with: their memory takes the four-child
-		 * tree (collect_refs made it big enough), so that the build's
-		 * peak is the refs, the binary nodes and the leaf order, not
-		 * the tree besides. */
-		accel_collapse(a, b.nodes, a->n_bounded, threads, b.refs, b.refs_bytes);
+		for (i = 0; i < a->n_bounded; i++)
+			b.order[i] = (uint32_t)b.refs[i].index;
+		/* The refs are done with: their memory takes the wide tree
+		 * (collect_refs made it big enough), so that the build's peak
+		 * is the refs and the binary nodes, or the binary nodes and
+		 * the tree, not all three. */
+		accel_collapse(a, b.nodes, a->n_bounded, width, threads, b.refs, b.refs_bytes);
 		b.refs = NULL;
-		nodes = rt_aligned_shrink(a->nodes, ACCEL_NODE_ALIGN, a->n_nodes, sizeof(*a->nodes));
-		if (nodes)
-			a->nodes = nodes;
 		rt_free(b.nodes);
 		b.nodes = NULL;
+		if (leaf_order(a, &b, shapes) < 0)
+			goto out_free;
+		/* The tree's block shrunk to the tree: the room it did not
+		 * use, and b.order, go. */
+		nodes = rt_aligned_shrink(a->nodes, ACCEL_NODE_ALIGN, a->n_nodes,
+					  accel_node_bytes(width));
+		if (nodes)
+			a->nodes = nodes;
 		rt_release_free_memory();
-		a->walk_avx2 = a->n_nodes >= ACCEL_AVX2_MIN_NODES && accel_avx2_usable();
 	}
 	rt_free(b.refs);
 	*out = a;

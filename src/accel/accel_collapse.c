@@ -1,6 +1,7 @@
-/* The walks' four-child tree from the build's binary one.  Each node
- * takes its binary node's two children and then, while it has fewer than
- * four, opens the child node of the largest surface area into that
+/* The walks' wide tree (four or eight children a node) from the build's
+ * binary one.  Each node takes its binary node's two children and then,
+ * while it has fewer than the width, opens the child node of the largest
+ * surface area into that
  * node's two children: the children a ray is most likely to enter come
  * up, and a node's boxes are tested in one operation instead of across
  * two levels.  The boxes are the binary tree's floats widened by a
@@ -72,9 +73,10 @@ static float tree_pad(const struct bvh_node *root)
 	return (float)(s * 0x1.02p-24);
 }
 
-/* The children of the four-child node standing for binary node b; how
- * many (1 to 4).  Their node slots still name binary nodes. */
-static int gather(const struct bvh_node *binary, size_t b, struct wide_child child[ACCEL_WIDTH])
+/* The children of the wide node standing for binary node b; how many (1
+ * to width).  Their node slots still name binary nodes. */
+static int gather(const struct bvh_node *binary, size_t b, int width,
+		  struct wide_child child[ACCEL_WIDTH_MAX])
 {
 	int n = 0, c;
 
@@ -82,7 +84,7 @@ static int gather(const struct bvh_node *binary, size_t b, struct wide_child chi
 	for (c = 0; c < 2; c++)
 		if (binary[b].slot[c] != 0)
 			child_of(binary, &binary[b], c, &child[n++]);
-	while (n < ACCEL_WIDTH) {
+	while (n < width) {
 		int open = -1;
 		float best = -1.0f;
 		for (c = 0; c < n; c++) {
@@ -112,16 +114,41 @@ static int gather(const struct bvh_node *binary, size_t b, struct wide_child chi
 	return n;
 }
 
-static void write_node(struct bvh4_node *node, const struct wide_child *child, int n, float pad)
-{
-	int c, k;
+/* The tree being made: its nodes, of `width` children. */
+struct wide_tree {
+	char *nodes;
+	int width;
+};
 
-	for (c = 0; c < ACCEL_WIDTH; c++) {
+/* Node i's fields (see struct bvh4_node): lo[axis * width + child], hi
+ * likewise, slot[child]. */
+struct node_view {
+	float *lo, *hi;
+	uint32_t *slot;
+};
+
+static struct node_view node_at(const struct wide_tree *t, size_t i)
+{
+	struct node_view v;
+
+	v.lo = (float *)(void *)(t->nodes + i * accel_node_bytes(t->width));
+	v.hi = v.lo + 3 * t->width;
+	v.slot = (uint32_t *)(void *)(v.hi + 3 * t->width);
+	return v;
+}
+
+static void write_node(const struct wide_tree *t, size_t i, const struct wide_child *child,
+		       int n, float pad)
+{
+	struct node_view v = node_at(t, i);
+	int c, k, w = t->width;
+
+	for (c = 0; c < w; c++) {
 		for (k = 0; k < 3; k++) {
-			node->lo[k][c] = c < n ? child[c].lo[k] - pad : INFINITY;
-			node->hi[k][c] = c < n ? child[c].hi[k] + pad : -INFINITY;
+			v.lo[k * w + c] = c < n ? child[c].lo[k] - pad : INFINITY;
+			v.hi[k * w + c] = c < n ? child[c].hi[k] + pad : -INFINITY;
 		}
-		node->slot[c] = c < n ? (uint32_t)child[c].slot : 0;
+		v.slot[c] = c < n ? (uint32_t)child[c].slot : 0;
 	}
 }
 
@@ -129,13 +156,13 @@ static void write_node(struct bvh4_node *node, const struct wide_child *child, i
  * parent left in its slot[0], its node children's slots still naming
  * binary nodes (the binary tree's own slots), to be numbered by
  * number_children. */
-static void make_level(const struct bvh_node *binary, struct bvh4_node *nodes, size_t first,
+static void make_level(const struct bvh_node *binary, const struct wide_tree *t, size_t first,
 		       size_t last, float pad)
 {
 	size_t i;
 
 	for (i = first; i < last; i++) {
-		struct wide_child child[ACCEL_WIDTH];
+		struct wide_child child[ACCEL_WIDTH_MAX];
 		int n, c;
 
 		/* The binary nodes of the coming turns, asked for ahead (the
@@ -144,52 +171,55 @@ static void make_level(const struct bvh_node *binary, struct bvh4_node *nodes, s
 		 * deep: a node's binary node eight turns ahead, its
 		 * children four turns ahead. */
 		if (i + 8 < last)
-			__builtin_prefetch(&binary[nodes[i + 8].slot[0]]);
+			__builtin_prefetch(&binary[node_at(t, i + 8).slot[0]]);
 		if (i + 4 < last) {
-			const struct bvh_node *ahead = &binary[nodes[i + 4].slot[0]];
+			const struct bvh_node *ahead = &binary[node_at(t, i + 4).slot[0]];
 			for (c = 0; c < 2; c++)
 				if (accel_slot_is_node(ahead->slot[c]))
 					__builtin_prefetch(&binary[accel_slot_index(ahead->slot[c])]);
 		}
-		n = gather(binary, nodes[i].slot[0], child);
-		write_node(&nodes[i], child, n, pad);
+		n = gather(binary, node_at(t, i).slot[0], t->width, child);
+		write_node(t, i, child, n, pad);
 	}
 }
 
 /* The node children of nodes [first, last), numbered from `next` in
  * order: each child's slot then names it, and its slot[0] the binary node
  * it is made from.  Returns the next number. */
-static size_t number_children(struct bvh4_node *nodes, size_t first, size_t last, size_t next)
+static size_t number_children(const struct wide_tree *t, size_t first, size_t last, size_t next)
 {
 	size_t i;
 	int c;
 
-	for (i = first; i < last; i++)
-		for (c = 0; c < ACCEL_WIDTH; c++) {
-			uintptr_t slot = nodes[i].slot[c];
-			if (!accel_slot_is_node(slot))
+	for (i = first; i < last; i++) {
+		uint32_t *slot = node_at(t, i).slot;
+		for (c = 0; c < t->width; c++) {
+			if (!accel_slot_is_node(slot[c]))
 				continue;
-			nodes[next].slot[0] = (uint32_t)accel_slot_index(slot);
-			nodes[i].slot[c] = (uint32_t)accel_slot_make(next++, ACCEL_SLOT_NODE);
+			node_at(t, next).slot[0] = (uint32_t)accel_slot_index(slot[c]);
+			slot[c] = (uint32_t)accel_slot_make(next++, ACCEL_SLOT_NODE);
 		}
+	}
 	return next;
 }
 
-static size_t count_children(const struct bvh4_node *nodes, size_t first, size_t last)
+static size_t count_children(const struct wide_tree *t, size_t first, size_t last)
 {
 	size_t i, n = 0;
 	int c;
 
-	for (i = first; i < last; i++)
-		for (c = 0; c < ACCEL_WIDTH; c++)
-			n += accel_slot_is_node(nodes[i].slot[c]);
+	for (i = first; i < last; i++) {
+		const uint32_t *slot = node_at(t, i).slot;
+		for (c = 0; c < t->width; c++)
+			n += accel_slot_is_node(slot[c]);
+	}
 	return n;
 }
 
 /* A level's second half, made by a thread of its own. */
 struct level_half {
 	const struct bvh_node *binary;
-	struct bvh4_node *nodes;
+	const struct wide_tree *tree;
 	size_t first, last, next;
 	float pad;
 	bool number;		/* false: make the nodes; true: number their children */
@@ -200,9 +230,9 @@ static void *level_half_run(void *arg)
 	struct level_half *h = arg;
 
 	if (h->number)
-		number_children(h->nodes, h->first, h->last, h->next);
+		number_children(h->tree, h->first, h->last, h->next);
 	else
-		make_level(h->binary, h->nodes, h->first, h->last, h->pad);
+		make_level(h->binary, h->tree, h->first, h->last, h->pad);
 	return NULL;
 }
 
@@ -223,34 +253,34 @@ static void split_level(struct level_half *self, struct level_half *h)
 /* Levels this big are made by two threads. */
 #define COLLAPSE_PARALLEL_MIN 8192
 
-/* The four-child nodes in breadth-first order, level by level, the
- * children of a node side by side, into nodes[] (room for any tree of its
- * leaves): node i made from the binary node its parent left in its
- * slot[0].  Breadth first, the binary nodes a level reads are known
- * before it starts, so they are asked for ahead; a big level is made by
- * two threads, each half's children numbered after the first half's, so
- * the nodes are the same for any thread count.  Returns the node count. */
-static size_t collapse(const struct bvh_node *binary, struct bvh4_node *nodes, int threads)
+/* The wide nodes in breadth-first order, level by level, the children of
+ * a node side by side, into t (room for any tree of its leaves): node i
+ * made from the binary node its parent left in its slot[0].  Breadth
+ * first, the binary nodes a level reads are known before it starts, so
+ * they are asked for ahead; a big level is made by two threads, each
+ * half's children numbered after the first half's, so the nodes are the
+ * same for any thread count.  Returns the node count. */
+static size_t collapse(const struct bvh_node *binary, const struct wide_tree *t, int threads)
 {
 	float pad = tree_pad(&binary[0]);
 	size_t first = 0, last = 1;
 
-	nodes[0].slot[0] = 0;
+	node_at(t, 0).slot[0] = 0;
 	while (first < last) {
 		size_t next;
 		if (threads > 1 && last - first >= COLLAPSE_PARALLEL_MIN) {
 			size_t mid = first + (last - first) / 2;
-			struct level_half lo = { binary, nodes, first, mid, 0, pad, false };
-			struct level_half hi = { binary, nodes, mid, last, 0, pad, false };
+			struct level_half lo = { binary, t, first, mid, 0, pad, false };
+			struct level_half hi = { binary, t, mid, last, 0, pad, false };
 			split_level(&lo, &hi);
 			lo.number = hi.number = true;
 			lo.next = last;
-			hi.next = last + count_children(nodes, first, mid);
+			hi.next = last + count_children(t, first, mid);
 			split_level(&lo, &hi);
-			next = hi.next + count_children(nodes, mid, last);
+			next = hi.next + count_children(t, mid, last);
 		} else {
-			make_level(binary, nodes, first, last, pad);
-			next = number_children(nodes, first, last, last);
+			make_level(binary, t, first, last, pad);
+			next = number_children(t, first, last, last);
 		}
 		first = last;
 		last = next;
@@ -258,15 +288,27 @@ static size_t collapse(const struct bvh_node *binary, struct bvh4_node *nodes, i
 	return last;
 }
 
-void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
-		    void *room, size_t room_bytes)
+/* A tree of L leaves: a node with fewer children than the width has only
+ * leaves below it (it stopped opening), at least two, and the others
+ * have `width` children; counting the children, N - 1 + L, gives at most
+ * (L - 1 + (w - 2) P) / (w - 1) nodes, P <= L / 2 of them partial:
+ * 2L/3 for four children, 4L/7 for eight. */
+size_t accel_collapse_room(size_t leaves, int width)
 {
-	/* A tree of L leaves has at most 3L/4 + 1 nodes (a node of two
-	 * children has two leaves; the others have three or more). */
+	return leaves / 2 * (size_t)width / (size_t)(width - 1) + 2;
+}
+
+void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int width,
+		    int threads, void *room, size_t room_bytes)
+{
+	struct wide_tree t;
+
 	assert(room && (uintptr_t)room % ACCEL_NODE_ALIGN == 0 &&
-	       leaves / 4 * 3 + 2 <= room_bytes / sizeof(*a->nodes));
+	       accel_collapse_room(leaves, width) <= room_bytes / accel_node_bytes(width));
 	(void)leaves;
 	(void)room_bytes;
+	t.nodes = room;
+	t.width = width;
 	a->nodes = room;
-	a->n_nodes = collapse(binary, a->nodes, threads);
+	a->n_nodes = collapse(binary, &t, threads);
 }

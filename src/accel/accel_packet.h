@@ -108,10 +108,11 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 		stack[top++].mask = all;
 	}
 	while (top > 0) {
-		const struct bvh4_node *nd;
-		uint32_t mask, child[ACCEL_WIDTH] = { 0 }, m;
-		double e[ACCEL_WIDTH], first[ACCEL_WIDTH];
-		int order[ACCEL_WIDTH], count, k, lead = -1, hits_any;
+		const ACCEL_NODE *nd;
+		uint32_t mask, child[ACCEL_W] = { 0 }, m;
+		double e[ACCEL_W], first[ACCEL_W];
+		int order[ACCEL_W], count, k, lead = -1;
+		unsigned hits_any;
 		uintptr_t slot;
 
 		top--;
@@ -127,14 +128,14 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 						 t_min[one], &b[one]);
 			continue;
 		}
-		nd = &a->nodes[accel_slot_index(slot)];
+		nd = WALK_NODE(a, accel_slot_index(slot));
 		for (m = mask; m; m &= m - 1) {
 			int ray = __builtin_ctz(m);
 			unsigned hits = (unsigned)node_entries(nd, &v[ray], t_min[ray], b[ray].t, e);
 			if (hits && lead < 0) {
 				lead = ray;
 				memcpy(first, e, sizeof(first));
-				for (k = 0; k < ACCEL_WIDTH; k++)
+				for (k = 0; k < ACCEL_W; k++)
 					if (!(hits >> k & 1))
 						first[k] = INFINITY;
 			}
@@ -145,8 +146,8 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 			continue;
 		/* The children in the lead ray's order, the ones it misses
 		 * last; pushed farthest first. */
-		for (k = 0, hits_any = 0; k < ACCEL_WIDTH; k++)
-			hits_any |= (child[k] != 0) << k;
+		for (k = 0, hits_any = 0; k < ACCEL_W; k++)
+			hits_any |= (unsigned)(child[k] != 0) << k;
 		count = order_children(hits_any, first, order);
 		for (k = count - 1; k >= 0; k--) {
 			stack[top].slot = nd->slot[order[k]];
@@ -185,8 +186,8 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 	stack[top].node = 0;
 	stack[top++].mask = open;
 	while (top > 0) {
-		const struct bvh4_node *nd;
-		uint32_t mask, child[ACCEL_WIDTH] = { 0 }, m;
+		const ACCEL_NODE *nd;
+		uint32_t mask, child[ACCEL_W] = { 0 }, m;
 		int c;
 
 		top--;
@@ -200,14 +201,14 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 				open &= ~mask;
 			continue;
 		}
-		nd = &a->nodes[stack[top].node];
+		nd = WALK_NODE(a, stack[top].node);
 		for (m = mask; m; m &= m - 1) {
 			int ray = __builtin_ctz(m);
 			unsigned hits = (unsigned)node_hits(nd, &v[ray], t_min[ray], t_max[ray]);
 			for (; hits; hits &= hits - 1)
 				child[__builtin_ctz(hits)] |= (uint32_t)1 << ray;
 		}
-		for (c = 0; c < ACCEL_WIDTH; c++) {
+		for (c = 0; c < ACCEL_W; c++) {
 			uintptr_t s = nd->slot[c];
 			if (!child[c])
 				continue;

@@ -1,5 +1,6 @@
 /* The hierarchy's layout, shared by its build (accel_build.c,
- * accel_collapse.c) and its walks (accel.c, accel_walk_avx2.c) and
+ * accel_collapse.c) and its walks (accel.c, accel_walk_avx2.c,
+ * accel_walk_avx512.c) and
  * private to them.  The build makes a binary tree (struct bvh_node: the
  * float boxes of two children, rounded outwards so that they never cut
  * off a hit), which accel_collapse.c turns into the tree the walks use:
@@ -12,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "whitted/diag.h"
 #include "whitted/ray.h"
 #include "whitted/shape.h"
 
@@ -55,28 +57,59 @@ static inline uintptr_t accel_slot_make(size_t index, unsigned tag)
 
 /* The build's binary node: bounds[side][axis][child], side 0 the
  * minimum, 1 the maximum.  No walk reads it, so it is packed (56 bytes,
- * not a cache line): it and the four-child tree coexist at the build's
- * memory peak. */
+ * not a cache line): it and the wide tree coexist at the build's memory
+ * peak. */
 struct bvh_node {
 	float bounds[2][3][2];
 	uint32_t slot[2];
 };
 
-#define ACCEL_WIDTH 4
+/* The walks' nodes, side by side in an array aligned to a cache line:
+ * lo[axis][child] and hi[axis][child], the children's float boxes (the
+ * binary tree's, widened: see accel_collapse.c), side by side so that one
+ * SIMD operation takes a plane of a node's children, then the children's
+ * slots.  An empty child has lo +inf and hi -inf on every axis, a box no
+ * ray enters, and a slot of 0, a leaf of no shapes.  The SSE2 and plain C
+ * walks (and every walk of a small tree) take four children a node, 112
+ * bytes; the AVX2 and AVX-512 walks of a big tree eight, 224 bytes (a
+ * plane is then one AVX-512 operation or two AVX2 ones, and the tree is
+ * shallower: gen-100k 0.92x, cloud-100k 0.84x the time of four children
+ * with AVX2).  Both are the same layout at two widths, which the collapse
+ * writes through struct node_view.  (Padded to 128 bytes, the four-child
+ * tree did not fit in the build's refs, and the walks were no faster;
+ * boxes quantized to bytes made the walks slower: the dequantizing cost
+ * more than the halved memory saved.) */
+#define ACCEL_WIDTH_MAX 8
 
-/* The walks' node, 112 bytes (nodes side by side in an array aligned to
- * a cache line: padded to 128, the tree did not fit in the build's refs,
- * and the walks were no faster): lo[axis][child] and hi[axis][child],
- * the children's float boxes (the binary tree's, widened: see
- * accel_collapse.c), side by side so that one four-lane operation takes a
- * plane of all four.  An empty child has lo +inf and hi -inf on every
- * axis, a box no ray enters, and a slot of 0, a leaf of no shapes.
- * (Boxes quantized to bytes, one cache line a node, made the walks slower
- * here: the dequantizing cost more than the halved memory saved.) */
 struct bvh4_node {
-	float lo[3][ACCEL_WIDTH], hi[3][ACCEL_WIDTH];
-	uint32_t slot[ACCEL_WIDTH];
+	float lo[3][4], hi[3][4];
+	uint32_t slot[4];
 };
+
+struct bvh8_node {
+	float lo[3][8], hi[3][8];
+	uint32_t slot[8];
+};
+
+/* A node of either width, field by field: the bytes of a node of width w
+ * are 3w floats of lo, 3w of hi, then w slots. */
+static inline size_t accel_node_bytes(int width)
+{
+	return (size_t)width * (6 * sizeof(float) + sizeof(uint32_t));
+}
+
+/* Which walks run, chosen at the build by the processor and the tree's
+ * size (accel_build.c), and with them the tree's width. */
+enum accel_walk {
+	ACCEL_WALK_BASE,	/* SSE2, or plain C in the portable build: four children */
+	ACCEL_WALK_AVX2,	/* eight children */
+	ACCEL_WALK_AVX512	/* eight children */
+};
+
+static inline int accel_walk_width(enum accel_walk w)
+{
+	return w == ACCEL_WALK_BASE ? 4 : 8;
+}
 
 /* Which shape wins an exact tie, whatever order a walk meets them in:
  * the one of the lower key.  An unbounded shape's key is its place among
@@ -87,11 +120,11 @@ struct bvh4_node {
  * floor), and otherwise the shape earlier in the scene.  That is a plain
  * loop's answer over the unbounded shapes and then the bounded ones, in
  * the scene's order, with a strict comparison.  So the nearest hit does
- * not depend on the tree's shape or the order of its walk, and every walk
- * (four lanes or two, packets or single rays, any thread count) gives
- * the same image. */
+ * not depend on the tree's shape, its width or the order of its walk,
+ * and every walk (eight lanes, four or two, packets or single rays, any
+ * thread count) gives the same image. */
 struct accel {
-	struct bvh4_node *nodes;	/* the root first */
+	void *nodes;		/* struct bvh4_node or bvh8_node by walk; the root first */
 	size_t n_nodes;
 	const struct shape **bounded;	/* in leaf order */
 	uint32_t *bounded_key;		/* n_unbounded + each one's index in the scene */
@@ -99,22 +132,34 @@ struct accel {
 	const struct shape **unbounded;	/* in the scene's order */
 	uint32_t *unbounded_key;	/* 0, 1, ... */
 	size_t n_unbounded;
-	bool walk_avx2;		/* the walks of accel_walk_avx2.c, where the processor has it */
+	enum accel_walk walk;
 };
 
-/* Builds a->nodes and a->n_nodes, the four-child tree, from the binary
- * one (its root at 0, `leaves` leaves), with up to `threads` threads (the
- * same tree for any number), in room: room_bytes aligned to
- * ACCEL_NODE_ALIGN, enough for any tree of that many leaves (3L/4 + 2
- * nodes), which a->nodes then owns. */
-void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int threads,
-		    void *room, size_t room_bytes);
+/* accel_build with the walks `walk` (and their tree's width) whatever
+ * the processor and the tree's size: for the tests, which compare the
+ * walks.  The caller checks accel_walk_usable first. */
+int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
+		     enum accel_walk walk, struct accel **out, struct diag *d);
 
-/* The walks with AVX2 box tests (accel_walk_avx2.c): the same nodes in
- * the same order with the same arithmetic, so the same hits.  Usable only
- * where accel_avx2_usable says so (false in the portable build, on other
- * processors and where the compiler was not asked for AVX2). */
-bool accel_avx2_usable(void);
+/* Builds a->nodes and a->n_nodes, the tree of `width` (4 or 8) children
+ * a node, from the binary one (its root at 0, `leaves` leaves), with up
+ * to `threads` threads (the same tree for any number), in room:
+ * room_bytes aligned to ACCEL_NODE_ALIGN, at least accel_collapse_room
+ * nodes, which a->nodes then owns. */
+void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leaves, int width,
+		    int threads, void *room, size_t room_bytes);
+/* The most nodes a tree of `leaves` leaves can have at `width`. */
+size_t accel_collapse_room(size_t leaves, int width);
+
+/* Whether the processor (and the build: the compiler asked for it, not
+ * the portable build) runs walk w, within WHITTED_ISA's limit (sse2,
+ * avx2, avx512: the widest walk allowed, to compare them). */
+bool accel_walk_usable(enum accel_walk w);
+
+/* The walks with AVX2 box tests over eight-child nodes
+ * (accel_walk_avx2.c) and with AVX-512 ones (accel_walk_avx512.c): the
+ * same boxes with the same arithmetic, lane by lane, as the base walks,
+ * so the same hits.  Called only where accel_walk_usable says so. */
 const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
 					 double t_min, double *t_max);
 bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max);
@@ -122,5 +167,15 @@ void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int
 				 const double *t_min, double *t_max, const struct shape **hit);
 uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				    const double *t_min, const double *t_max);
+bool accel_avx2_cpu(void);	/* compiled in and run by this processor */
+const struct shape *accel_avx512_intersect(const struct accel *a, const struct ray *r,
+					   double t_min, double *t_max);
+bool accel_avx512_occluded(const struct accel *a, const struct ray *r, double t_min,
+			   double t_max);
+void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				   const double *t_min, double *t_max, const struct shape **hit);
+uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
+				      const double *t_min, const double *t_max);
+bool accel_avx512_cpu(void);
 
 #endif

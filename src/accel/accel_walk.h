@@ -1,7 +1,9 @@
 /* The hierarchy's walks, nearest hit and any hit, written once for each
- * set of box tests: the file that includes this defines struct walk_ray,
- * walk_ray_init, node_entries and node_hits (accel.c: SSE2 or plain C;
- * accel_walk_avx2.c: AVX2) and ACCEL_WALK(name), the names the walks get.
+ * set of box tests: the file that includes this defines ACCEL_NODE and
+ * ACCEL_W, the node type and its width, struct walk_ray, walk_ray_init,
+ * node_entries and node_hits (accel.c: SSE2 or plain C over four
+ * children; accel_walk_avx2.c and accel_walk_avx512.c: AVX2 and AVX-512
+ * over eight) and ACCEL_WALK(name), the names the walks get.
  *
  * The nearest hit is the nearest t, and on an exact tie the shape with
  * the lower key (accel_tree.h): a shape that ties the best so far is
@@ -22,26 +24,29 @@
 #ifndef RT_ACCEL_WALK_COMMON
 #define RT_ACCEL_WALK_COMMON
 
-/* At most ACCEL_WIDTH - 1 children wait for each node on the path down. */
-#define ACCEL_WALK_STACK ((ACCEL_WIDTH - 1) * ACCEL_STACK)
+/* At most ACCEL_WIDTH_MAX - 1 children wait for each node on the path
+ * down. */
+#define ACCEL_WALK_STACK ((ACCEL_WIDTH_MAX - 1) * ACCEL_STACK)
 #ifndef ACCEL_PREFETCH
 #define ACCEL_PREFETCH 1
 #endif
 
 /* Asks for the memory of every child a ray enters before it uses any: a
- * node's two lines, a leaf's first shape.  The walks wait mostly on
- * loads that miss the cache (perf, gen-100k: the first box of a node
- * and the first field of a leaf's shape); so they miss together instead
- * of one after another. */
-static inline void prefetch_children(const struct accel *a, const struct bvh4_node *n,
-				     unsigned mask)
+ * node's lines, a leaf's first shape.  The walks wait mostly on loads
+ * that miss the cache (perf, gen-100k: the first box of a node and the
+ * first field of a leaf's shape); so they miss together instead of one
+ * after another.  slot: the node's slots; node_bytes: the tree's node
+ * size. */
+static inline void prefetch_children(const struct accel *a, const uint32_t *slot_of,
+				     unsigned mask, size_t node_bytes)
 {
 	for (; ACCEL_PREFETCH && mask; mask &= mask - 1) {
-		uintptr_t slot = n->slot[__builtin_ctz(mask)];
+		uintptr_t slot = slot_of[__builtin_ctz(mask)];
 		if (accel_slot_is_node(slot)) {
-			const char *p = (const char *)&a->nodes[accel_slot_index(slot)];
-			__builtin_prefetch(p);
-			__builtin_prefetch(p + 64);
+			const char *p = (const char *)a->nodes + accel_slot_index(slot) * node_bytes;
+			size_t line;
+			for (line = 0; line < node_bytes; line += 64)
+				__builtin_prefetch(p + line);
 		} else if (accel_slot_tag(slot) > 0) {
 			__builtin_prefetch(a->bounded[accel_slot_index(slot)]);
 		}
@@ -111,13 +116,12 @@ static inline bool leaf_occluded(const struct accel *a, uintptr_t slot, const st
 
 /* The hit children of a node (mask), nearest first by entry e: how many,
  * their numbers in order[].  Equal entries keep the children's order. */
-static inline int order_children(int mask, const double e[ACCEL_WIDTH], int order[ACCEL_WIDTH])
+static inline int order_children(unsigned mask, const double *e, int *order)
 {
 	int n = 0, c, j;
 
-	for (c = 0; c < ACCEL_WIDTH; c++) {
-		if (!(mask >> c & 1))
-			continue;
+	for (; mask; mask &= mask - 1) {
+		c = __builtin_ctz(mask);
 		for (j = n; j > 0 && e[order[j - 1]] > e[c]; j--)
 			order[j] = order[j - 1];
 		order[j] = c;
@@ -127,6 +131,9 @@ static inline int order_children(int mask, const double e[ACCEL_WIDTH], int orde
 }
 
 #endif
+
+/* Node i of the tree the including file walks. */
+#define WALK_NODE(a, i) (&((const ACCEL_NODE *)(a)->nodes)[i])
 
 /* The nearest hit under node `node` for one ray, from the best so far. */
 static inline __attribute__((always_inline)) void
@@ -139,16 +146,16 @@ ACCEL_WALK(nearest_from)(const struct accel *a, size_t node, const struct walk_r
 	int top = 0;
 
 	for (;;) {
-		const struct bvh4_node *n = &a->nodes[node];
-		double e[ACCEL_WIDTH];
+		const ACCEL_NODE *n = WALK_NODE(a, node);
+		double e[ACCEL_W];
 		int mask = node_entries(n, v, t_min, b.t, e);
 
 		if (mask) {
-			int order[ACCEL_WIDTH], k = 1, count;
-			prefetch_children(a, n, (unsigned)mask);
+			int order[ACCEL_W], k = 1, count;
+			prefetch_children(a, n->slot, (unsigned)mask, sizeof(*n));
 			if (mask & (mask - 1)) {
 				/* The farther children wait, farthest deepest. */
-				count = order_children(mask, e, order);
+				count = order_children((unsigned)mask, e, order);
 				for (k = count - 1; k > 0; k--) {
 					stack[top].slot = n->slot[order[k]];
 					stack[top++].entry = e[order[k]];
@@ -214,10 +221,10 @@ ACCEL_WALK(occluded_from)(const struct accel *a, size_t node, const struct walk_
 
 	stack[top++] = node;
 	while (top > 0) {
-		const struct bvh4_node *n = &a->nodes[stack[--top]];
+		const ACCEL_NODE *n = WALK_NODE(a, stack[--top]);
 		unsigned mask = (unsigned)node_hits(n, v, t_min, t_max);
 
-		prefetch_children(a, n, mask);
+		prefetch_children(a, n->slot, mask, sizeof(*n));
 		for (; mask; mask &= mask - 1) {
 			uintptr_t slot = n->slot[__builtin_ctz(mask)];
 			if (accel_slot_is_node(slot))

@@ -1,10 +1,10 @@
-/* The hierarchy's walks with AVX2 box tests, compiled with -mavx2 (the
- * Makefile, on x86) and chosen at start-up where the processor has it.
- * One four-lane operation takes a plane's slab distances of all four
- * children of a node, in the SSE2 walk's arithmetic lane by lane (float
- * bounds widened to double, then (b - o) * inv, no fused multiply-add),
- * so every entry, exit and miss is the SSE2 walk's to the bit, and so is
- * every image. */
+/* The hierarchy's walks over eight-child nodes with AVX2 box tests,
+ * compiled with -mavx2 (the Makefile, on x86) and chosen at the build
+ * where the processor has it and not AVX-512.  Two four-lane operations
+ * take a plane's slab distances of a node's eight children, in the base
+ * walks' arithmetic lane by lane (float bounds widened to double, then
+ * (b - o) * inv, no fused multiply-add), so every box test gives the base
+ * walks' answer for that box to the bit, and the images are theirs. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -17,9 +17,12 @@
 #if defined(__AVX2__) && !defined(ACCEL_PORTABLE)
 #include <immintrin.h>
 
+#define ACCEL_NODE struct bvh8_node
+#define ACCEL_W 8
+
 struct walk_ray {
 	__m256d o[3], inv[3];
-	int near_off[3], far_off[3];	/* float offsets into struct bvh4_node */
+	int near_off[3], far_off[3];	/* float offsets into struct bvh8_node */
 };
 
 static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
@@ -29,8 +32,8 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 	for (k = 0; k < 3; k++) {
 		v->o[k] = _mm256_set1_pd(rs->o[k]);
 		v->inv[k] = _mm256_set1_pd(rs->inv[k]);
-		v->near_off[k] = rs->near[k] * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
-		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_WIDTH + ACCEL_WIDTH * k;
+		v->near_off[k] = rs->near[k] * 3 * ACCEL_W + ACCEL_W * k;
+		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_W + ACCEL_W * k;
 	}
 }
 
@@ -40,7 +43,7 @@ static inline __m256d slab_t(const float *b, int off, __m256d o, __m256d inv)
 }
 
 /* The entries of children 4h .. 4h + 3, and the mask of those entered. */
-static inline __m256d node_interval(const struct bvh4_node *node, const struct walk_ray *v,
+static inline __m256d node_interval(const struct bvh8_node *node, const struct walk_ray *v,
 				    int h, double t_min, double t_max, int *mask)
 {
 	const float *b = &node->lo[0][0] + 4 * h;
@@ -56,110 +59,32 @@ static inline __m256d node_interval(const struct bvh4_node *node, const struct w
 	return lo;
 }
 
-static inline int node_entries(const struct bvh4_node *node, const struct walk_ray *v,
-			       double t_min, double t_max, double entry[ACCEL_WIDTH])
+static inline int node_entries(const struct bvh8_node *node, const struct walk_ray *v,
+			       double t_min, double t_max, double entry[8])
 {
-	int mask = 0, m, h;
+	int m0, m1;
 
-	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
-		_mm256_storeu_pd(entry + 4 * h, node_interval(node, v, h, t_min, t_max, &m));
-		mask |= m << 4 * h;
-	}
-	return mask;
+	_mm256_storeu_pd(entry, node_interval(node, v, 0, t_min, t_max, &m0));
+	_mm256_storeu_pd(entry + 4, node_interval(node, v, 1, t_min, t_max, &m1));
+	return m0 | m1 << 4;
 }
 
-static inline int node_hits(const struct bvh4_node *node, const struct walk_ray *v,
+static inline int node_hits(const struct bvh8_node *node, const struct walk_ray *v,
 			    double t_min, double t_max)
 {
-	int mask = 0, m, h;
+	int m0, m1;
 
-	for (h = 0; h < ACCEL_WIDTH / 4; h++) {
-		(void)node_interval(node, v, h, t_min, t_max, &m);
-		mask |= m << 4 * h;
-	}
-	return mask;
+	(void)node_interval(node, v, 0, t_min, t_max, &m0);
+	(void)node_interval(node, v, 1, t_min, t_max, &m1);
+	return m0 | m1 << 4;
 }
 
 #define ACCEL_WALK(name) walk_avx2_##name
 #include "accel/accel_walk.h"
 #include "accel/accel_packet.h"
 
-/* WHITTED_ISA=sse2 keeps the SSE2 walks, to compare the two. */
-bool accel_avx2_usable(void)
-{
-	const char *isa = getenv("WHITTED_ISA");
-
-	if (isa && strcmp(isa, "sse2") == 0)
-		return false;
-	return __builtin_cpu_supports("avx2");
-}
-
-const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
-					 double t_min, double *t_max)
-{
-	return walk_avx2_intersect(a, r, t_min, t_max);
-}
-
-bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
-{
-	return walk_avx2_occluded(a, r, t_min, t_max);
-}
-
-void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				 const double *t_min, double *t_max, const struct shape **hit)
-{
-	walk_avx2_intersect_packet(a, r, n, t_min, t_max, hit);
-}
-
-uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
-				    const double *t_min, const double *t_max)
-{
-	return walk_avx2_occluded_packet(a, r, n, t_min, t_max);
-}
-#else
-bool accel_avx2_usable(void)
-{
-	return false;
-}
-
-const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
-					 double t_min, double *t_max)
-{
-	(void)a;
-	(void)r;
-	(void)t_min;
-	(void)t_max;
-	return NULL;
-}
-
-bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max)
-{
-	(void)a;
-	(void)r;
-	(void)t_min;
-	(void)t_max;
-	return false;
-}
-
-void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				 const double *t_min, double *t_max, const struct shape **hit)
-{
-	(void)a;
-	(void)r;
-	(void)n;
-	(void)t_min;
-	(void)t_max;
-	(void)hit;
-}
-
-uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
-				    const double *t_min, const double *t_max)
-{
-	(void)a;
-	(void)r;
-	(void)n;
-	(void)t_min;
-	(void)t_max;
-	return 0;
-}
+#define ACCEL_CPU_HAS __builtin_cpu_supports("avx2")
 #endif
+
+#define ACCEL_EXPORT(name) accel_avx2_##name
+#include "accel/accel_walk_export.h"

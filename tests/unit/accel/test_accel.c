@@ -15,6 +15,7 @@
 #include "accel/accel_tree.h"
 #include "shapes/solve.h"
 #include "support.h"
+#include "walk_set.h"
 
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
@@ -30,12 +31,12 @@ static void add(struct scene *s, struct shape *sh)
  * whose box (and every box above it) holds the shape's own box; each node
  * but the root is reached once; empty children come last, with empty
  * boxes. */
-static void assert_tree_sound(const struct scene *s)
+static void assert_accel_sound(const struct accel *a)
 {
-	const struct accel *a = s->accel;
+	const int w = accel_walk_width(a->walk);
 	unsigned char *seen = test_calloc(a->n_bounded + 1, 1);
 	unsigned char *reached = test_calloc(a->n_nodes + 1, 1);
-	struct { size_t node; float lo[3], hi[3]; } stack[3 * ACCEL_STACK + 1];
+	struct { size_t node; float lo[3], hi[3]; } stack[(ACCEL_WIDTH_MAX - 1) * ACCEL_STACK + 1];
 	size_t i, shapes = 0;
 	int top = 0, k;
 
@@ -50,27 +51,31 @@ static void assert_tree_sound(const struct scene *s)
 	}
 	top++;
 	while (top > 0) {
-		const struct bvh4_node *n;
+		const float *lo, *hi;
+		const uint32_t *slots;
 		float plo[3], phi[3];
 		int c, empty = 0;
 
 		top--;
-		n = &a->nodes[stack[top].node];
+		lo = (const float *)(const void *)((const char *)a->nodes +
+						   stack[top].node * accel_node_bytes(w));
+		hi = lo + 3 * w;
+		slots = (const uint32_t *)(const void *)(hi + 3 * w);
 		memcpy(plo, stack[top].lo, sizeof(plo));
 		memcpy(phi, stack[top].hi, sizeof(phi));
-		for (c = 0; c < ACCEL_WIDTH; c++) {
-			uintptr_t slot = n->slot[c];
+		for (c = 0; c < w; c++) {
+			uintptr_t slot = slots[c];
 			if (slot == 0) {
 				/* An empty child: none before it. */
 				empty = 1;
 				for (k = 0; k < 3; k++)
-					assert_true(n->lo[k][c] > n->hi[k][c]);
+					assert_true(lo[k * w + c] > hi[k * w + c]);
 				continue;
 			}
 			assert_false(empty);
 			for (k = 0; k < 3; k++) {
-				assert_true(n->lo[k][c] >= plo[k]);
-				assert_true(n->hi[k][c] <= phi[k]);
+				assert_true(lo[k * w + c] >= plo[k]);
+				assert_true(hi[k * w + c] <= phi[k]);
 			}
 			if (accel_slot_is_node(slot)) {
 				size_t j = accel_slot_index(slot);
@@ -79,8 +84,8 @@ static void assert_tree_sound(const struct scene *s)
 				reached[j] = 1;
 				stack[top].node = j;
 				for (k = 0; k < 3; k++) {
-					stack[top].lo[k] = n->lo[k][c];
-					stack[top].hi[k] = n->hi[k][c];
+					stack[top].lo[k] = lo[k * w + c];
+					stack[top].hi[k] = hi[k * w + c];
 				}
 				top++;
 				continue;
@@ -93,9 +98,9 @@ static void assert_tree_sound(const struct scene *s)
 				seen[pos] = 1;
 				shapes++;
 				assert_true(shape_bounds(a->bounded[pos], &box));
-				assert_true(n->lo[0][c] <= box.min.x && box.max.x <= n->hi[0][c]);
-				assert_true(n->lo[1][c] <= box.min.y && box.max.y <= n->hi[1][c]);
-				assert_true(n->lo[2][c] <= box.min.z && box.max.z <= n->hi[2][c]);
+				assert_true(lo[0 * w + c] <= box.min.x && box.max.x <= hi[0 * w + c]);
+				assert_true(lo[1 * w + c] <= box.min.y && box.max.y <= hi[1 * w + c]);
+				assert_true(lo[2 * w + c] <= box.min.z && box.max.z <= hi[2 * w + c]);
 			}
 		}
 	}
@@ -105,6 +110,11 @@ static void assert_tree_sound(const struct scene *s)
 out:
 	test_free(seen);
 	test_free(reached);
+}
+
+static void assert_tree_sound(const struct scene *s)
+{
+	assert_accel_sound(s->accel);
 }
 
 /* A random primitive near centre c with size about `size`. */
@@ -271,24 +281,28 @@ static void test_accel_random_scenes_match_brute_force(void **state)
 	}
 }
 
-/* The AVX2 walks give the SSE2 walks' answers to the bit: the same
- * nearest shape (not only one at the same distance: the same nodes in the
- * same order), the same t, the same occlusion, on random scenes and rays
- * (axis-aligned ones too, whose slabs hold infinities and NaNs). */
-static void test_accel_avx2_walks_match_sse2(void **state)
+/* Every walk the processor runs (AVX2 and AVX-512 over eight-child trees)
+ * gives the base walks' answers (SSE2 over four children) to the bit: the
+ * same nearest shape (not only one at the same distance: the tie rule
+ * makes the answer the tree's and the walk's order's no matter), the
+ * same t, the same occlusion, on random scenes and rays (axis-aligned
+ * ones too, whose slabs hold infinities and NaNs); and each tree is
+ * sound. */
+static void test_accel_wide_walks_match_the_base_walks(void **state)
 {
 	int scene_no;
 
 	(void)state;
-	if (!accel_avx2_usable()) {
-		print_message("no AVX2 on this processor (or not compiled for it): nothing to compare\n");
+	if (!accel_walk_usable(ACCEL_WALK_AVX2) && !accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX2 or AVX-512 on this processor (or not compiled for them): "
+			      "nothing to compare\n");
 		skip();
 	}
 	for (scene_no = 0; scene_no < 6; scene_no++) {
 		struct scene *s = scene_create("random");
-		int n = 40 + scene_no * scene_no * 60, i;
+		int n = 40 + scene_no * scene_no * 60, i, k;
 		double half = 50;
-		struct accel *a;
+		struct walk_set w;
 		struct diag d;
 
 		support_rng_seed((uint64_t)scene_no + 101);
@@ -298,13 +312,17 @@ static void test_accel_avx2_walks_match_sse2(void **state)
 		if (scene_no % 2 == 1)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 		assert_int_equal(scene_prepare(s, 1, &d), 0);
-		a = s->accel;
+		walk_set_build(&w, s);
+		assert_true(w.n >= 2);
+		for (k = 0; k < w.n; k++)
+			assert_accel_sound(w.a[k]);
 		for (i = 0; i < 4000; i++) {
 			struct ray r;
 			double t_min = support_rng() < 0.5 ? 1e-6 : support_uniform(0, half);
 			double t_max = support_rng() < 0.5 ? INFINITY : support_uniform(t_min, 4 * half);
-			double ta = t_max, tb = t_max;
-			const struct shape *sa, *sb;
+			double ta = t_max;
+			const struct shape *sa;
+			bool occluded;
 
 			r.origin = support_random_point(1.5 * half);
 			r.dir = support_random_direction();
@@ -320,14 +338,17 @@ static void test_accel_avx2_walks_match_sse2(void **state)
 				int axis = (int)(support_rng() * 3);
 				r.dir = vec3_make(axis == 0, axis == 1, -(double)(axis == 2));
 			}
-			a->walk_avx2 = false;
-			sa = accel_intersect(a, &r, t_min, &ta);
-			sb = accel_avx2_intersect(a, &r, t_min, &tb);
-			assert_ptr_equal(sa, sb);
-			assert_memory_equal(&ta, &tb, sizeof(ta));
-			assert_int_equal(accel_occluded(a, &r, t_min, t_max),
-					 accel_avx2_occluded(a, &r, t_min, t_max));
+			sa = accel_intersect(w.a[0], &r, t_min, &ta);
+			occluded = accel_occluded(w.a[0], &r, t_min, t_max);
+			for (k = 1; k < w.n; k++) {
+				double tb = t_max;
+				const struct shape *sb = accel_intersect(w.a[k], &r, t_min, &tb);
+				assert_ptr_equal(sa, sb);
+				assert_memory_equal(&ta, &tb, sizeof(ta));
+				assert_int_equal(occluded, accel_occluded(w.a[k], &r, t_min, t_max));
+			}
 		}
+		walk_set_free(&w);
 		scene_destroy(s);
 	}
 }
@@ -450,37 +471,50 @@ static void test_accel_many_at_one_point(void **state)
 	scene_destroy(s);
 }
 
+/* Node i's slots in a's tree, of either width. */
+static const uint32_t *node_slots(const struct accel *a, size_t i)
+{
+	int w = accel_walk_width(a->walk);
+
+	return (const uint32_t *)(const void *)((const char *)a->nodes + i * accel_node_bytes(w) +
+						 6 * (size_t)w * sizeof(float));
+}
+
 /* The halves of big nodes are built by different threads, each into the
- * node indices its refs reserve: the tree must come out the same, node
- * for node and in the same order, whatever the number of threads. */
+ * node indices its refs reserve, and the wide levels of the collapse by
+ * two: the tree must come out the same, node for node and in the same
+ * order, whatever the number of threads, at both widths (the build does
+ * not need the processor to run a walk: these trees are not walked). */
 static void assert_same_tree_for_threads(struct scene *s)
 {
-	struct bvh4_node *nodes;
-	const struct shape **bounded;
-	size_t n_nodes, n_bounded;
-	struct diag d;
+	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2 };
 	static const int threads[] = { 2, 3, 7, 64 };
-	size_t k, i;
+	struct diag d;
+	size_t j, k, i;
 
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	n_nodes = s->accel->n_nodes;
-	n_bounded = s->accel->n_bounded;
-	nodes = test_malloc(n_nodes * sizeof(*nodes));
-	bounded = test_malloc(n_bounded * sizeof(*bounded));
-	memcpy(nodes, s->accel->nodes, n_nodes * sizeof(*nodes));
-	memcpy(bounded, s->accel->bounded, n_bounded * sizeof(*bounded));
-	for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
-		assert_int_equal(scene_prepare(s, threads[k], &d), 0);
-		assert_int_equal(s->accel->n_nodes, n_nodes);
-		assert_int_equal(s->accel->n_bounded, n_bounded);
-		assert_memory_equal(s->accel->nodes, nodes, n_nodes * sizeof(*nodes));
-		assert_memory_equal(s->accel->bounded, bounded, n_bounded * sizeof(*bounded));
-		for (i = 0; i < n_bounded; i++)
-			assert_ptr_equal(s->shapes[s->accel->bounded_key[i] - s->accel->n_unbounded],
-					 bounded[i]);
+	for (j = 0; j < sizeof(walks) / sizeof(walks[0]); j++) {
+		struct accel *one, *many;
+		size_t bytes;
+
+		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[j], &one, &d), 0);
+		bytes = one->n_nodes * accel_node_bytes(accel_walk_width(walks[j]));
+		assert_accel_sound(one);
+		for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
+			assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, threads[k], walks[j],
+							  &many, &d), 0);
+			assert_int_equal(many->n_nodes, one->n_nodes);
+			assert_int_equal(many->n_bounded, one->n_bounded);
+			assert_memory_equal(many->nodes, one->nodes, bytes);
+			assert_memory_equal(many->bounded, one->bounded,
+					    one->n_bounded * sizeof(*one->bounded));
+			for (i = 0; i < one->n_bounded; i++)
+				assert_ptr_equal(s->shapes[many->bounded_key[i] - many->n_unbounded],
+						 one->bounded[i]);
+			accel_destroy(many);
+		}
+		accel_destroy(one);
 	}
-	test_free(nodes);
-	test_free(bounded);
 }
 
 static void test_accel_threads_build_the_same_tree(void **state)
@@ -497,13 +531,20 @@ static void test_accel_threads_build_the_same_tree(void **state)
 		add_random_shape(s, support_random_point(300), support_uniform(0.2, 3));
 	assert_int_equal(scene_add_floor(s, 1000, 20, &d), 0);
 	assert_same_tree_for_threads(s);
-	/* The four-child tree: at most a third of the binary one's nodes
-	 * and a few more (nodes over only two leaves), every index a node. */
-	assert_true(s->accel->n_nodes <= s->accel->n_bounded / 2);
-	assert_int_equal(s->accel->nodes[0].slot[0] & 7, ACCEL_SLOT_NODE);
-	/* The nodes packed at 112 bytes from a cache line's start. */
+	/* The wide tree: at most half as many nodes as shapes at four
+	 * children, 40% at eight (here 36%: nodes over only two or three
+	 * leaves), within the room the build allows, the root a node. */
+	assert_true(s->accel->n_nodes <= s->accel->n_bounded *
+			     (accel_walk_width(s->accel->walk) == 4 ? 5 : 4) / 10);
+	assert_true(s->accel->n_nodes <=
+		    accel_collapse_room(s->accel->n_bounded, accel_walk_width(s->accel->walk)));
+	assert_int_equal(node_slots(s->accel, 0)[0] & 7, ACCEL_SLOT_NODE);
+	/* The nodes packed at 112 and 224 bytes from a cache line's start. */
 	assert_int_equal((uintptr_t)s->accel->nodes % ACCEL_NODE_ALIGN, 0);
 	assert_int_equal(sizeof(struct bvh4_node), 112);
+	assert_int_equal(sizeof(struct bvh8_node), 224);
+	assert_int_equal(accel_node_bytes(4), 112);
+	assert_int_equal(accel_node_bytes(8), 224);
 	assert_tree_sound(s);
 	assert_true(compare_rays(s, 3000, 300) > 300);
 	scene_destroy(s);
@@ -960,7 +1001,7 @@ int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_accel_random_scenes_match_brute_force),
-		cmocka_unit_test(test_accel_avx2_walks_match_sse2),
+		cmocka_unit_test(test_accel_wide_walks_match_the_base_walks),
 		cmocka_unit_test(test_accel_all_shapes_at_one_centre),
 		cmocka_unit_test(test_accel_one_shape),
 		cmocka_unit_test(test_accel_no_shapes),

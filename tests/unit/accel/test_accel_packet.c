@@ -1,7 +1,7 @@
 /* The packet walks against the single-ray walks: every ray of a packet
  * gets what it gets alone, to the bit (the same shape, not only one at the
- * same distance; the same t; the same occlusion), with the AVX2 and the
- * plain-C box tests, on random scenes of every primitive with packets
+ * same distance; the same t; the same occlusion), with every walk the
+ * processor runs (SSE2 over four children, AVX2 and AVX-512 over eight), on random scenes of every primitive with packets
  * coherent and not (rays that disagree on which child is nearer), exact
  * ties (copies of one shape, cubes that share faces), rays along box faces
  * and edges (slabs of 0 * inf), and a shape with its own packet method. */
@@ -12,6 +12,7 @@
 #include "accel/accel.h"
 #include "accel/accel_tree.h"
 #include "support.h"
+#include "walk_set.h"
 
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
@@ -51,48 +52,49 @@ static void add_random_shape(struct scene *s, struct vec3 c, double size)
 	}
 }
 
-/* Compares one packet with the single-ray walks, with the box tests of
- * `avx2`: shapes, t to the bit, occlusion. */
-static void check_packet_with(struct accel *a, bool avx2, const struct ray *r, int n,
-			      const double *t_min, const double *t_max)
+/* Compares one packet with the single-ray walks of the same hierarchy:
+ * shapes, t to the bit, occlusion; and with the first walk's (the base
+ * one's) single rays. */
+static void check_packet_with(const struct accel *a, const struct accel *base,
+			      const struct ray *r, int n, const double *t_min, const double *t_max)
 {
 	const struct shape *hit[ACCEL_PACKET];
 	double t[ACCEL_PACKET];
 	uint32_t blocked;
 	int i;
 
-	a->walk_avx2 = avx2;
 	memcpy(t, t_max, (size_t)n * sizeof(*t));
 	accel_intersect_packet(a, r, n, t_min, t, hit);
 	blocked = accel_occluded_packet(a, r, n, t_min, t_max);
 	for (i = 0; i < n; i++) {
-		double ts = t_max[i];
+		double ts = t_max[i], tb = t_max[i];
 		const struct shape *one = accel_intersect(a, &r[i], t_min[i], &ts);
+		const struct shape *by_base = accel_intersect(base, &r[i], t_min[i], &tb);
 		bool occ = accel_occluded(a, &r[i], t_min[i], t_max[i]);
 
 		if (one != hit[i] || memcmp(&ts, &t[i], sizeof(ts)) != 0 ||
-		    occ != (bool)(blocked >> i & 1)) {
+		    occ != (bool)(blocked >> i & 1) || one != by_base ||
+		    memcmp(&ts, &tb, sizeof(ts)) != 0) {
 			print_error("ray %d of %d (%s): alone %s at t = %.17g, occluded %d; in the "
-				    "packet %s at t = %.17g, occluded %d\n", i, n,
-				    avx2 ? "avx2" : "plain C", one ? one->ops->keyword : "nothing",
+				    "packet %s at t = %.17g, occluded %d; base walk %s at %.17g\n",
+				    i, n, accel_walk_name(a), one ? one->ops->keyword : "nothing",
 				    ts, occ, hit[i] ? hit[i]->ops->keyword : "nothing", t[i],
-				    (int)(blocked >> i & 1));
+				    (int)(blocked >> i & 1), by_base ? by_base->ops->keyword : "nothing",
+				    tb);
 			fail();
 		}
 	}
 	assert_int_equal(blocked >> n, 0);
 }
 
-/* With both sets of box tests, where the processor has AVX2. */
-static void check_packet(struct accel *a, const struct ray *r, int n, const double *t_min,
-			 const double *t_max)
+/* With every walk of w. */
+static void check_packet(const struct walk_set *w, const struct ray *r, int n,
+			 const double *t_min, const double *t_max)
 {
-	bool had = a->walk_avx2;
+	int k;
 
-	check_packet_with(a, false, r, n, t_min, t_max);
-	if (accel_avx2_usable())
-		check_packet_with(a, true, r, n, t_min, t_max);
-	a->walk_avx2 = had;
+	for (k = 0; k < w->n; k++)
+		check_packet_with(w->a[k], w->a[0], r, n, t_min, t_max);
 }
 
 /* A random packet of the kind `kind`: 0, from one point towards a small
@@ -146,6 +148,7 @@ static int random_packet(int kind, double half, struct ray *r, double *t_min, do
 
 static void test_packet_random_scenes_match_single_rays(void **state)
 {
+	struct walk_set w;
 	int scene_no;
 
 	(void)state;
@@ -162,12 +165,14 @@ static void test_packet_random_scenes_match_single_rays(void **state)
 		if (scene_no % 3 == 0)
 			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 		assert_int_equal(scene_prepare(s, 1, &d), 0);
+		walk_set_build(&w, s);
 		for (k = 0; k < 600; k++) {
 			struct ray r[ACCEL_PACKET];
 			double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
 			int m = random_packet(k % 6, half, r, t_min, t_max);
-			check_packet(s->accel, r, m, t_min, t_max);
+			check_packet(&w, r, m, t_min, t_max);
 		}
+		walk_set_free(&w);
 		scene_destroy(s);
 	}
 }
@@ -178,6 +183,7 @@ static void test_packet_random_scenes_match_single_rays(void **state)
  * so must each ray of a packet. */
 static void test_packet_ties_keep_the_single_walks_shape(void **state)
 {
+	struct walk_set w;
 	struct scene *s = scene_create("ties");
 	struct diag d;
 	int i, j, k;
@@ -198,12 +204,14 @@ static void test_packet_ties_keep_the_single_walks_shape(void **state)
 		}
 	}
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 1500; k++) {
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
 		int m = random_packet(k % 6, 20, r, t_min, t_max);
-		check_packet(s->accel, r, m, t_min, t_max);
+		check_packet(&w, r, m, t_min, t_max);
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
@@ -213,6 +221,7 @@ static void test_packet_ties_keep_the_single_walks_shape(void **state)
  * and +-inf) and the diagonals (through edges and corners of boxes). */
 static void test_packet_rays_along_faces_and_edges(void **state)
 {
+	struct walk_set w;
 	struct scene *s = scene_create("lattice");
 	struct diag d;
 	int x, y, z, k;
@@ -225,6 +234,7 @@ static void test_packet_rays_along_faces_and_edges(void **state)
 				if (support_rng() < 0.6)
 					add(s, cube_create(vec3_make(x, y, z), 1.0, &mat));
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 3000; k++) {
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
@@ -251,14 +261,16 @@ static void test_packet_rays_along_faces_and_edges(void **state)
 			t_min[i] = 1e-9;
 			t_max[i] = support_rng() < 0.7 ? INFINITY : floor(support_uniform(1, 8));
 		}
-		check_packet(s->accel, r, n, t_min, t_max);
+		check_packet(&w, r, n, t_min, t_max);
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
 /* No bounded shapes (only the floor), and no shapes at all. */
 static void test_packet_unbounded_and_empty(void **state)
 {
+	struct walk_set w;
 	struct scene *s = scene_create("floor only");
 	struct ray r[ACCEL_PACKET];
 	double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
@@ -269,17 +281,21 @@ static void test_packet_unbounded_and_empty(void **state)
 	support_rng_seed(3);
 	assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 200; k++) {
 		int n = random_packet(k % 6, 50, r, t_min, t_max);
-		check_packet(s->accel, r, n, t_min, t_max);
+		check_packet(&w, r, n, t_min, t_max);
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 	s = scene_create("empty");
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 20; k++) {
 		int n = random_packet(k % 6, 50, r, t_min, t_max);
-		check_packet(s->accel, r, n, t_min, t_max);
+		check_packet(&w, r, n, t_min, t_max);
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
@@ -302,6 +318,7 @@ static uint32_t counting_intersect_packet(const struct shape *s, const struct ra
 
 static void test_packet_shape_packet_method(void **state)
 {
+	struct walk_set w;
 	struct scene *s = scene_create("packet method");
 	struct shape_ops ops;
 	struct diag d;
@@ -321,11 +338,12 @@ static void test_packet_shape_packet_method(void **state)
 		add(s, sh);
 	}
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 600; k++) {
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
 		int n = random_packet(k % 5, 40, r, t_min, t_max);
-		check_packet(s->accel, r, n, t_min, t_max);
+		check_packet(&w, r, n, t_min, t_max);
 	}
 	before = packet_calls;
 	assert_true(before > 100);
@@ -349,6 +367,7 @@ static void test_packet_shape_packet_method(void **state)
 		assert_memory_equal(ta, tb, (size_t)n * sizeof(double));
 		assert_int_equal(ma & ~mask, 0);
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 

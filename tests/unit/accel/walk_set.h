@@ -1,0 +1,43 @@
+/* A scene's hierarchy built once for each walk this processor runs (the
+ * base walks over four children; AVX2 and AVX-512 over eight), for the
+ * tests that hold the walks to one another's answers. */
+#ifndef RT_TEST_WALK_SET_H
+#define RT_TEST_WALK_SET_H
+
+#include "accel/accel.h"
+#include "accel/accel_tree.h"
+#include "support.h"
+
+struct walk_set {
+	struct accel *a[3];
+	int n;
+};
+
+static inline void walk_set_build(struct walk_set *w, const struct scene *s)
+{
+	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2,
+						 ACCEL_WALK_AVX512 };
+	struct diag d;
+	size_t k;
+
+	w->n = 0;
+	for (k = 0; k < sizeof(walks) / sizeof(walks[0]); k++) {
+		if (!accel_walk_usable(walks[k]))
+			continue;
+		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[k],
+						  &w->a[w->n], &d), 0);
+		assert_int_equal(w->a[w->n]->walk, walks[k]);
+		w->n++;
+	}
+}
+
+static inline void walk_set_free(struct walk_set *w)
+{
+	int k;
+
+	for (k = 0; k < w->n; k++)
+		accel_destroy(w->a[k]);
+	w->n = 0;
+}
+
+#endif
