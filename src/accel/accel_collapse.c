@@ -156,10 +156,10 @@ static void write_node(const struct wide_tree *t, size_t i, const struct wide_ch
  * parent left in its slot[0], its node children's slots still naming
  * binary nodes (the binary tree's own slots), to be numbered by
  * number_children. */
-static void make_level(const struct bvh_node *binary, const struct wide_tree *t, size_t first,
-		       size_t last, float pad)
+static size_t make_level(const struct bvh_node *binary, const struct wide_tree *t, size_t first,
+			 size_t last, float pad)
 {
-	size_t i;
+	size_t i, children = 0;
 
 	for (i = first; i < last; i++) {
 		struct wide_child child[ACCEL_WIDTH_MAX];
@@ -180,7 +180,10 @@ static void make_level(const struct bvh_node *binary, const struct wide_tree *t,
 		}
 		n = gather(binary, node_at(t, i).slot[0], t->width, child);
 		write_node(t, i, child, n, pad);
+		for (c = 0; c < n; c++)
+			children += accel_slot_is_node(child[c].slot);
 	}
+	return children;
 }
 
 /* The node children of nodes [first, last), numbered from `next` in
@@ -203,19 +206,6 @@ static size_t number_children(const struct wide_tree *t, size_t first, size_t la
 	return next;
 }
 
-static size_t count_children(const struct wide_tree *t, size_t first, size_t last)
-{
-	size_t i, n = 0;
-	int c;
-
-	for (i = first; i < last; i++) {
-		const uint32_t *slot = node_at(t, i).slot;
-		for (c = 0; c < t->width; c++)
-			n += accel_slot_is_node(slot[c]);
-	}
-	return n;
-}
-
 /* A level's second half, made by a thread of its own. */
 struct level_half {
 	const struct bvh_node *binary;
@@ -223,6 +213,7 @@ struct level_half {
 	size_t first, last, next;
 	float pad;
 	bool number;		/* false: make the nodes; true: number their children */
+	size_t children;	/* made: how many of the nodes' children are nodes */
 };
 
 static void *level_half_run(void *arg)
@@ -232,7 +223,7 @@ static void *level_half_run(void *arg)
 	if (h->number)
 		number_children(h->tree, h->first, h->last, h->next);
 	else
-		make_level(h->binary, h->tree, h->first, h->last, h->pad);
+		h->children = make_level(h->binary, h->tree, h->first, h->last, h->pad);
 	return NULL;
 }
 
@@ -270,16 +261,16 @@ static size_t collapse(const struct bvh_node *binary, const struct wide_tree *t,
 		size_t next;
 		if (threads > 1 && last - first >= COLLAPSE_PARALLEL_MIN) {
 			size_t mid = first + (last - first) / 2;
-			struct level_half lo = { binary, t, first, mid, 0, pad, false };
-			struct level_half hi = { binary, t, mid, last, 0, pad, false };
+			struct level_half lo = { binary, t, first, mid, 0, pad, false, 0 };
+			struct level_half hi = { binary, t, mid, last, 0, pad, false, 0 };
 			split_level(&lo, &hi);
 			lo.number = hi.number = true;
 			lo.next = last;
-			hi.next = last + count_children(t, first, mid);
+			hi.next = last + lo.children;
 			split_level(&lo, &hi);
-			next = hi.next + count_children(t, mid, last);
+			next = hi.next + hi.children;
 		} else {
-			make_level(binary, t, first, last, pad);
+			(void)make_level(binary, t, first, last, pad);
 			next = number_children(t, first, last, last);
 		}
 		first = last;

@@ -13,6 +13,32 @@
 #include "scenefile/parse_private.h"
 #include "whitted/scenefile.h"
 
+/* shape_ops_find_in(text, len, p->dialects), from the parser's memo
+ * where it holds the keyword (the registry does not change while a file
+ * is read). */
+static const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_t len)
+{
+	struct parser_ops_memo *m;
+	const struct shape_ops *ops;
+	size_t i;
+
+	for (i = 0; i < PARSER_OPS_MEMO; i++) {
+		m = &p->ops_memo[i];
+		if (m->ops && m->dialects == p->dialects && m->len == len &&
+		    memcmp(m->keyword, text, len) == 0)
+			return m->ops;
+	}
+	ops = shape_ops_find_in(text, len, p->dialects);
+	if (ops && len <= sizeof(m->keyword)) {
+		m = &p->ops_memo[p->ops_memo_next++ % PARSER_OPS_MEMO];
+		m->ops = ops;
+		m->dialects = p->dialects;
+		m->len = len;
+		memcpy(m->keyword, text, len);
+	}
+	return ops;
+}
+
 int parse_shape(struct parser *p, struct shape **out, int *line, long index, long count)
 {
 	const struct shape_ops *ops;
@@ -25,7 +51,7 @@ int parse_shape(struct parser *p, struct shape **out, int *line, long index, lon
 		return parser_fail(p, RT_E_SYNTAX,
 				   "expected an object keyword (%s) for object %ld of %ld, found end of file",
 				   shape_keywords_in(p->dialects), index, count);
-	ops = shape_ops_find_in(kw.text, kw.len, p->dialects);
+	ops = parse_find_ops(p, kw.text, kw.len);
 	if (!ops) {
 		parser_describe_token(&kw, found, sizeof(found));
 		if (lexer_looks_numeric(&kw))
