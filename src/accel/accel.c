@@ -50,7 +50,7 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 static inline void slab_t(const float *b, int off, __m128d o, __m128d inv, __m128d *t01,
 			  __m128d *t23)
 {
-	__m128 f = _mm_load_ps(b + off);
+	__m128 f = _mm_loadu_ps(b + off);
 
 	*t01 = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(f), o), inv);
 	*t23 = _mm_mul_pd(_mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(f, f)), o), inv);
@@ -212,21 +212,48 @@ const char *accel_walk_name(const struct accel *a)
 #endif
 }
 
-/* WHITTED_ISA caps the walks (sse2, avx2, avx512; unset: the widest the
- * processor has), to compare them on one machine. */
+/* WHITTED_ISA caps the walks (sse2, avx2, avx512; unset or anything
+ * else: the widest the processor has), to compare them on one machine. */
+static bool cap_is(const char *isa, const char *name)
+{
+	return isa && strcmp(isa, name) == 0;
+}
+
+const char *accel_walk_cap_unknown(void)
+{
+	const char *isa = getenv("WHITTED_ISA");
+
+	if (!isa || cap_is(isa, "sse2") || cap_is(isa, "avx2") || cap_is(isa, "avx512"))
+		return NULL;
+	return isa;
+}
+
+/* Whether the processor runs the instructions: asked here, in a file
+ * compiled for the baseline, not in the files compiled for them. */
+static bool cpu_has(enum accel_walk w)
+{
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
+	return w == ACCEL_WALK_AVX512 ? __builtin_cpu_supports("avx512f")
+				       : __builtin_cpu_supports("avx2");
+#else
+	(void)w;
+	return false;
+#endif
+}
+
 bool accel_walk_usable(enum accel_walk w)
 {
 	const char *isa = getenv("WHITTED_ISA");
 
 	switch (w) {
 	case ACCEL_WALK_AVX512:
-		if (isa && (strcmp(isa, "sse2") == 0 || strcmp(isa, "avx2") == 0))
+		if (cap_is(isa, "sse2") || cap_is(isa, "avx2"))
 			return false;
-		return accel_avx512_cpu();
+		return accel_avx512_compiled() && cpu_has(w);
 	case ACCEL_WALK_AVX2:
-		if (isa && strcmp(isa, "sse2") == 0)
+		if (cap_is(isa, "sse2"))
 			return false;
-		return accel_avx2_cpu();
+		return accel_avx2_compiled() && cpu_has(w);
 	default:
 		return true;
 	}

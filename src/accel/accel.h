@@ -39,17 +39,20 @@ void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
 			       const double *t_min, const double *t_max);
 /* Whether packets are faster than single rays here: where the walks have
- * the AVX2 box tests (a tree big enough; see accel_build.c).  The plain-C
+ * the AVX2 or AVX-512 box tests (a tree big enough; see accel_build.c).  The plain-C
  * ones (SSE2 and portable builds) test ray by ray, slower than the single
  * walks, and in a small tree the packets' set-up costs more than their
  * walk saves (the course example: 6% more instructions). */
 bool accel_packets_pay(const struct accel *a);
 
-/* Which box tests the walks use ("avx2", "sse2" or "portable"), for
- * --stats. */
+/* Which box tests the walks use ("avx512", "avx2", "sse2" or
+ * "portable"), for --stats. */
 const char *accel_walk_name(const struct accel *a);
 /* Sizes, for --stats and the memory tests. */
 size_t accel_node_count(const struct accel *a);
+/* WHITTED_ISA's value when it names no walk (see accel_walk_usable), else
+ * NULL. */
+const char *accel_walk_cap_unknown(void);
 size_t accel_bytes(const struct accel *a);
 
 #endif

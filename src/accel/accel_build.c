@@ -338,6 +338,11 @@ int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
 	struct accel *a;
 
 	*out = NULL;
+	/* A slot holds an index of 29 bits (accel_tree.h), a key 32. */
+	if (n_shapes > ACCEL_SHAPES_MAX)
+		return diag_fail(d, RT_E_RANGE,
+				 "%zu objects: the hierarchy holds at most %lu", n_shapes,
+				 (unsigned long)ACCEL_SHAPES_MAX);
 	a = rt_calloc(1, sizeof(*a));
 	if (!a)
 		goto out_nomem;

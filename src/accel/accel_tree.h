@@ -47,6 +47,9 @@ static inline size_t accel_slot_index(uintptr_t slot)
 	return (size_t)(slot >> 3);
 }
 
+/* The most shapes a tree holds: a slot's index has 29 bits. */
+#define ACCEL_SHAPES_MAX ((size_t)1 << 29)
+
 static inline uintptr_t accel_slot_make(size_t index, unsigned tag)
 {
 	return (uintptr_t)index << 3 | tag;
@@ -167,7 +170,7 @@ void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int
 				 const double *t_min, double *t_max, const struct shape **hit);
 uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				    const double *t_min, const double *t_max);
-bool accel_avx2_cpu(void);	/* compiled in and run by this processor */
+bool accel_avx2_compiled(void);	/* compiled for its instructions */
 const struct shape *accel_avx512_intersect(const struct accel *a, const struct ray *r,
 					   double t_min, double *t_max);
 bool accel_avx512_occluded(const struct accel *a, const struct ray *r, double t_min,
@@ -176,6 +179,6 @@ void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, i
 				   const double *t_min, double *t_max, const struct shape **hit);
 uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				      const double *t_min, const double *t_max);
-bool accel_avx512_cpu(void);
+bool accel_avx512_compiled(void);
 
 #endif

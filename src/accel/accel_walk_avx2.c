@@ -39,7 +39,7 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 
 static inline __m256d slab_t(const float *b, int off, __m256d o, __m256d inv)
 {
-	return _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_load_ps(b + off)), o), inv);
+	return _mm256_mul_pd(_mm256_sub_pd(_mm256_cvtps_pd(_mm_loadu_ps(b + off)), o), inv);
 }
 
 /* The entries of children 4h .. 4h + 3, and the mask of those entered. */
@@ -83,7 +83,7 @@ static inline int node_hits(const struct bvh8_node *node, const struct walk_ray 
 #include "accel/accel_walk.h"
 #include "accel/accel_packet.h"
 
-#define ACCEL_CPU_HAS __builtin_cpu_supports("avx2")
+#define ACCEL_COMPILED 1
 #endif
 
 #define ACCEL_EXPORT(name) accel_avx2_##name

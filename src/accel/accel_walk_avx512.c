@@ -38,11 +38,13 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 	}
 }
 
-/* A plane of the eight children: 32 bytes at a multiple of 32 (nodes of
- * 224 bytes from a 64-byte boundary), so the load is aligned. */
+/* A plane of the eight children: 32 bytes, at a multiple of 32 in the
+ * array of 224-byte nodes from a 64-byte boundary; loaded unaligned all
+ * the same (no slower where it is aligned), so that a tree moved by its
+ * shrink to a lesser boundary still walks. */
 static inline __m512d slab_t(const float *b, int off, __m512d o, __m512d inv)
 {
-	return _mm512_mul_pd(_mm512_sub_pd(_mm512_cvtps_pd(_mm256_load_ps(b + off)), o), inv);
+	return _mm512_mul_pd(_mm512_sub_pd(_mm512_cvtps_pd(_mm256_loadu_ps(b + off)), o), inv);
 }
 
 /* The children's entries, and the mask of those entered. */
@@ -84,7 +86,7 @@ static inline int node_hits(const struct bvh8_node *node, const struct walk_ray 
 #include "accel/accel_walk.h"
 #include "accel/accel_packet.h"
 
-#define ACCEL_CPU_HAS __builtin_cpu_supports("avx512f")
+#define ACCEL_COMPILED 1
 #endif
 
 #define ACCEL_EXPORT(name) accel_avx512_##name

@@ -2,15 +2,16 @@
  * (accel_walk_avx2.c, accel_walk_avx512.c), written once: the including
  * file defines ACCEL_EXPORT(name), the names they get (accel_tree.h
  * declares them), and, where it was compiled for its instructions,
- * ACCEL_WALK(name), the names of its walks, and ACCEL_CPU_HAS, whether
- * the processor runs them.  Compiled without its instructions, it has
- * stubs that accel_walk_usable never lets run. */
+ * ACCEL_WALK(name), the names of its walks, and ACCEL_COMPILED.  Compiled
+ * without its instructions, it has stubs that accel_walk_usable never
+ * lets run (and asks the processor itself, in accel.c, compiled for the
+ * baseline). */
 #include <stdbool.h>
 #include <stdint.h>
 
 #include "accel/accel_tree.h"
 
-#ifdef ACCEL_CPU_HAS
+#ifdef ACCEL_COMPILED
 const struct shape *ACCEL_EXPORT(intersect)(const struct accel *a, const struct ray *r,
 					    double t_min, double *t_max)
 {
@@ -35,9 +36,9 @@ uint32_t ACCEL_EXPORT(occluded_packet)(const struct accel *a, const struct ray *
 	return ACCEL_WALK(occluded_packet)(a, r, n, t_min, t_max);
 }
 
-bool ACCEL_EXPORT(cpu)(void)
+bool ACCEL_EXPORT(compiled)(void)
 {
-	return ACCEL_CPU_HAS;
+	return true;
 }
 #else
 const struct shape *ACCEL_EXPORT(intersect)(const struct accel *a, const struct ray *r,
@@ -82,7 +83,7 @@ uint32_t ACCEL_EXPORT(occluded_packet)(const struct accel *a, const struct ray *
 	return 0;
 }
 
-bool ACCEL_EXPORT(cpu)(void)
+bool ACCEL_EXPORT(compiled)(void)
 {
 	return false;
 }

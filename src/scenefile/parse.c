@@ -13,10 +13,8 @@
 #include "scenefile/parse_private.h"
 #include "whitted/scenefile.h"
 
-/* shape_ops_find_in(text, len, p->dialects), from the parser's memo
- * where it holds the keyword (the registry does not change while a file
- * is read). */
-static const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_t len)
+const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_t len,
+				       unsigned dialects)
 {
 	struct parser_ops_memo *m;
 	const struct shape_ops *ops;
@@ -24,17 +22,16 @@ static const struct shape_ops *parse_find_ops(struct parser *p, const char *text
 
 	for (i = 0; i < PARSER_OPS_MEMO; i++) {
 		m = &p->ops_memo[i];
-		if (m->ops && m->dialects == p->dialects && m->len == len &&
-		    memcmp(m->keyword, text, len) == 0)
+		/* The registry's own test (registry_is): the keyword, exactly. */
+		if (m->ops && m->dialects == dialects && strlen(m->ops->keyword) == len &&
+		    memcmp(m->ops->keyword, text, len) == 0)
 			return m->ops;
 	}
-	ops = shape_ops_find_in(text, len, p->dialects);
-	if (ops && len <= sizeof(m->keyword)) {
+	ops = shape_ops_find_in(text, len, dialects);
+	if (ops) {
 		m = &p->ops_memo[p->ops_memo_next++ % PARSER_OPS_MEMO];
 		m->ops = ops;
-		m->dialects = p->dialects;
-		m->len = len;
-		memcpy(m->keyword, text, len);
+		m->dialects = dialects;
 	}
 	return ops;
 }
@@ -51,7 +48,7 @@ int parse_shape(struct parser *p, struct shape **out, int *line, long index, lon
 		return parser_fail(p, RT_E_SYNTAX,
 				   "expected an object keyword (%s) for object %ld of %ld, found end of file",
 				   shape_keywords_in(p->dialects), index, count);
-	ops = parse_find_ops(p, kw.text, kw.len);
+	ops = parse_find_ops(p, kw.text, kw.len, p->dialects);
 	if (!ops) {
 		parser_describe_token(&kw, found, sizeof(found));
 		if (lexer_looks_numeric(&kw))

@@ -147,7 +147,7 @@ static void *part_run(void *arg)
 		int kw_line;
 
 		if (!t.text || (size_t)(t.text - pt->text) >= pt->stop ||
-		    !shape_ops_find(t.text, t.len))
+		    !parse_find_ops(&p, t.text, t.len, 0))
 			break;
 		if (pt->n % PARSE_CANCEL_EVERY == PARSE_CANCEL_EVERY - 1 && part_cancelled(pt))
 			return NULL;

@@ -15,6 +15,12 @@
 /* Reads one object, keyword first, into *out; *line is the keyword's.
  * index and count (1-based) are for the messages. */
 int parse_shape(struct parser *p, struct shape **out, int *line, long index, long count);
+/* shape_ops_find_in(text, len, dialects), from the parser's memo of the
+ * keywords it met lately where it holds this one (the registry does not
+ * change while a file is read), so that a big file's objects do not each
+ * take the registry's lock. */
+const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_t len,
+				       unsigned dialects);
 /* The note for a shape that can never be seen, for the first
  * PARSE_MAX_NOTES such shapes; the others are counted. */
 void parser_note_degenerate(struct parser *p, const struct shape *sh, int line, long index);

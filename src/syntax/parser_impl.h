@@ -9,12 +9,11 @@
 #include "whitted/diag.h"
 #include "whitted/parser.h"
 
-/* An object keyword the parser looked up lately, and its table. */
+/* An object keyword the parser looked up lately (its table's own), with
+ * the dialects it was looked up in. */
 struct parser_ops_memo {
 	const struct shape_ops *ops;	/* NULL: an empty entry */
 	unsigned dialects;
-	size_t len;
-	char keyword[24];
 };
 
 /* How many object keywords a parser remembers: a file names a few
@@ -36,7 +35,7 @@ struct parser {
 	/* The tables of the keywords met lately (zeroed with the parser):
 	 * so that each object of a big file does not take the registry's
 	 * lock, which the threads reading its parts contended for (pthread
-	 * calls were 6% of gen-1M's run). */
+	 * calls were 6% of gen-1M's run); see parse_find_ops. */
 	struct parser_ops_memo ops_memo[PARSER_OPS_MEMO];
 	unsigned ops_memo_next;
 };

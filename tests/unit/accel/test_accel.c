@@ -199,10 +199,16 @@ static bool brute_occluded(const struct scene *s, const struct ray *r, double t_
 	return false;
 }
 
-/* Compares the BVH with brute force on n rays; returns how many hit. */
+/* Compares the BVH with brute force on n rays, with the scene's own
+ * hierarchy and one built for each walk the processor runs (so the
+ * eight-child trees face every test, whatever the scene's size); returns
+ * how many hit. */
 static int compare_rays(const struct scene *s, int n, double half)
 {
-	int i, hits = 0;
+	struct walk_set w;
+	int i, k, hits = 0;
+
+	walk_set_build(&w, s);
 
 	for (i = 0; i < n; i++) {
 		struct ray r;
@@ -232,26 +238,36 @@ static int compare_rays(const struct scene *s, int n, double half)
 			if (support_rng() < 0.5)
 				r.dir = vec3_neg(r.dir);
 		}
-		a = accel_intersect(s->accel, &r, t_min, &ta);
 		b = brute_nearest(s, &r, t_min, &tb);
-		if (ta != tb || (a == NULL) != (b == NULL)) {
-			print_error("ray %d: BVH t = %.17g (%s), brute force t = %.17g (%s)\n", i, ta,
-				    a ? a->ops->keyword : "none", tb, b ? b->ops->keyword : "none");
-			fail();
-		}
-		if (a != b) {
-			/* A tie the walk gave to another shape than the loop's
-			 * first. */
-			print_error("ray %d: BVH shape %zu, brute force shape %zu, both at t = %.17g\n", i,
-				    shape_index(s, a), shape_index(s, b), ta);
-			fail();
-		}
-		hits += a != NULL;
-		if (accel_occluded(s->accel, &r, t_min, t_max) != brute_occluded(s, &r, t_min, t_max)) {
-			print_error("ray %d: occlusion differs\n", i);
-			fail();
+		hits += b != NULL;
+		for (k = -1; k < w.n; k++) {
+			const struct accel *acc = k < 0 ? s->accel : w.a[k];
+			ta = t_max;
+			a = accel_intersect(acc, &r, t_min, &ta);
+			if (ta != tb || (a == NULL) != (b == NULL)) {
+				print_error("ray %d (%s walk): BVH t = %.17g (%s), brute force t = "
+					    "%.17g (%s)\n", i, accel_walk_name(acc), ta,
+					    a ? a->ops->keyword : "none", tb,
+					    b ? b->ops->keyword : "none");
+				fail();
+			}
+			if (a != b) {
+				/* A tie the walk gave to another shape than the
+				 * loop's first. */
+				print_error("ray %d (%s walk): BVH shape %zu, brute force shape %zu, "
+					    "both at t = %.17g\n", i, accel_walk_name(acc),
+					    shape_index(s, a), shape_index(s, b), ta);
+				fail();
+			}
+			if (accel_occluded(acc, &r, t_min, t_max) !=
+			    brute_occluded(s, &r, t_min, t_max)) {
+				print_error("ray %d (%s walk): occlusion differs\n", i,
+					    accel_walk_name(acc));
+				fail();
+			}
 		}
 	}
+	walk_set_free(&w);
 	return hits;
 }
 
@@ -550,6 +566,42 @@ static void test_accel_threads_build_the_same_tree(void **state)
 	scene_destroy(s);
 }
 
+/* The room the collapse is given (accel_collapse_room) holds any tree:
+ * it is at least the bound counted from the nodes' children (a node with
+ * fewer children than the width has only leaves below it, at least two:
+ * at most floor((wL/2 - 1) / (w - 1)) nodes for L leaves), and trees reach
+ * that bound: 8192 spheres evenly spaced on a line make a balanced binary
+ * tree whose collapse leaves every bottom node two leaves. */
+static void test_accel_collapse_room_holds_the_fullest_tree(void **state)
+{
+	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2 };
+	struct scene *s = scene_create("line");
+	size_t leaves, j, w;
+	struct diag d;
+	int i;
+
+	(void)state;
+	for (leaves = 1; leaves < 20000; leaves++)
+		for (w = 4; w <= 8; w += 4)
+			assert_true(accel_collapse_room(leaves, (int)w) >=
+				    (w * leaves / 2 > 1 ? (w * leaves / 2 - 1) / (w - 1) : 1));
+	for (i = 0; i < 8192; i++)
+		add(s, sphere_create(vec3_make(3.0 * i, 0, 0), 1, &mat));
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	for (j = 0; j < 2; j++) {
+		struct accel *a;
+		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 2, walks[j], &a, &d), 0);
+		w = (size_t)accel_walk_width(walks[j]);
+		assert_int_equal(a->n_bounded, 8192);
+		assert_int_equal(a->n_nodes, (w * 8192 / 2 - 1) / (w - 1));	/* 5461, 4681 */
+		assert_true(a->n_nodes <= accel_collapse_room(8192, (int)w));
+		assert_accel_sound(a);
+		accel_destroy(a);
+	}
+	assert_true(compare_rays(s, 2000, 12000) > 0);
+	scene_destroy(s);
+}
+
 /* A tree big enough that its wide levels (8192 nodes and more) are made
  * by two threads in the collapse: the same nodes for any thread count,
  * and a sound tree. */
@@ -695,29 +747,35 @@ static int make_grazes(struct graze *g)
 /* The ray must hit `want` (brute force says so, for a ray that meets it
  * on its edge or inside it) and the hierarchy must agree, for the nearest
  * hit and for occlusion. */
-static void check_graze(const struct scene *s, const struct shape *want, struct ray r,
-			const char *what, int index)
+static void check_graze(const struct scene *s, const struct walk_set *w,
+			const struct shape *want, struct ray r, const char *what, int index)
 {
-	double ta = INFINITY, tb = INFINITY;
+	double ta, tb = INFINITY;
 	const struct shape *a, *b;
+	int k;
 
 	b = brute_nearest(s, &r, 1e-6, &tb);
 	if (b != want) {
 		print_error("%s %d: brute force misses the grazed shape\n", what, index);
 		fail();
 	}
-	a = accel_intersect(s->accel, &r, 1e-6, &ta);
-	if (a != b || ta != tb) {
-		print_error("%s %d: ray from (%.17g, %.17g, %.17g) along (%g, %g, %g): BVH %s at "
-			    "t = %.17g, brute force %s at t = %.17g\n", what, index, r.origin.x,
-			    r.origin.y, r.origin.z, r.dir.x, r.dir.y, r.dir.z, a ? "hits" : "misses",
-			    ta, b ? "hits" : "misses", tb);
-		fail();
-	}
-	if (!accel_occluded(s->accel, &r, 1e-6, 2 * tb)) {
-		print_error("%s %d: the BVH finds no blocker; brute force hits at t = %.17g\n", what,
-			    index, tb);
-		fail();
+	for (k = -1; k < w->n; k++) {
+		const struct accel *acc = k < 0 ? s->accel : w->a[k];
+		ta = INFINITY;
+		a = accel_intersect(acc, &r, 1e-6, &ta);
+		if (a != b || ta != tb) {
+			print_error("%s %d (%s walk): ray from (%.17g, %.17g, %.17g) along (%g, %g, "
+				    "%g): BVH %s at t = %.17g, brute force %s at t = %.17g\n", what,
+				    index, accel_walk_name(acc), r.origin.x, r.origin.y, r.origin.z,
+				    r.dir.x, r.dir.y, r.dir.z, a ? "hits" : "misses", ta,
+				    b ? "hits" : "misses", tb);
+			fail();
+		}
+		if (!accel_occluded(acc, &r, 1e-6, 2 * tb)) {
+			print_error("%s %d (%s walk): the BVH finds no blocker; brute force hits at "
+				    "t = %.17g\n", what, index, accel_walk_name(acc), tb);
+			fail();
+		}
 	}
 }
 
@@ -726,8 +784,10 @@ static void check_graze(const struct scene *s, const struct shape *want, struct 
  * oblique ray through that sliver. */
 static void check_grazes(const struct scene *s, const struct graze *g, int n)
 {
+	struct walk_set w;
 	int i;
 
+	walk_set_build(&w, s);
 	for (i = 0; i < n; i++) {
 		const struct graze *e = &g[i];
 		struct vec3 down = on_axes(e->a, 0, -1, 0);
@@ -740,17 +800,18 @@ static void check_grazes(const struct scene *s, const struct graze *g, int n)
 		assert_true((sliver - e->v) * e->inward > 0);
 		r.dir = down;
 		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0 + 0.5);
-		check_graze(s, e->shape, r, "edge", i);
+		check_graze(s, &w, e->shape, r, "edge", i);
 		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0);
-		check_graze(s, e->shape, r, "vertex A", i);
+		check_graze(s, &w, e->shape, r, "vertex A", i);
 		r.origin = on_axes(e->a, e->v, e->w + 5, e->c0 + 1.0);
-		check_graze(s, e->shape, r, "vertex B", i);
+		check_graze(s, &w, e->shape, r, "vertex B", i);
 		r.origin = on_axes(e->a, sliver, e->w + 5, e->c0 + 0.5);
-		check_graze(s, e->shape, r, "sliver", i);
+		check_graze(s, &w, e->shape, r, "sliver", i);
 		r.dir = dir;
 		r.origin = vec3_add_scaled(target, dir, -5.0);
-		check_graze(s, e->shape, r, "oblique", i);
+		check_graze(s, &w, e->shape, r, "oblique", i);
 	}
+	walk_set_free(&w);
 }
 
 static void test_accel_rays_grazing_box_bounds(void **state)
@@ -798,6 +859,7 @@ static void test_accel_rays_grazing_clip_faces(void **state)
 		{ 1, 1, 1, 0, 0, 0, 0, -16, 0, 60 },
 	};
 	struct scene *s = scene_create("clip faces");
+	struct walk_set w;
 	struct shape *q;
 	struct aabb box;
 	struct diag d;
@@ -810,6 +872,7 @@ static void test_accel_rays_grazing_clip_faces(void **state)
 	for (i = 0; i < 12; i++)
 		add(s, sphere_create(vec3_make(20.0 * (i % 4) - 30, 20.0 * (i / 4) + 20, 0), 1, &mat));
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
 	for (k = 0; k < 2; k++) {
 		/* The face the nearest float would cut: the bottom of the first
 		 * box, the top of the second. */
@@ -827,12 +890,13 @@ static void test_accel_rays_grazing_clip_faces(void **state)
 
 			r.origin = vec3_make(-10, cy, heights[i]);
 			r.dir = vec3_make(1, 0, 0);
-			check_graze(s, q, r, "clip face", 2 * k + i);
+			check_graze(s, &w, q, r, "clip face", 2 * k + i);
 			r.origin = vec3_make(0, k == 0 ? -10 : 20, heights[i]);
 			r.dir = vec3_make(0, k == 0 ? 1 : -1, 0);
-			check_graze(s, q, r, "clip face", 2 * k + i);
+			check_graze(s, &w, q, r, "clip face", 2 * k + i);
 		}
 	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
@@ -882,8 +946,9 @@ static void solids_on_a_floor(double width, bool floor_wins)
 {
 	struct scene *s = scene_create("standing");
 	const struct shape *floor;
+	struct walk_set w;
 	struct diag d;
-	int i, ties = 0;
+	int i, k, ties = 0;
 
 	support_rng_seed(12);
 	for (i = 0; i < 300; i++) {
@@ -897,6 +962,9 @@ static void solids_on_a_floor(double width, bool floor_wins)
 	add(s, floor_create_view(width, 25, &mat));
 	floor = s->shapes[300];
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	/* Every walk: 300 solids make a tree of four children; the
+	 * eight-child walks get theirs here. */
+	walk_set_build(&w, s);
 	for (i = 0; i < 60000; i++) {
 		const struct shape *target = s->shapes[(size_t)(support_rng() * 300)];
 		struct aabb box;
@@ -922,10 +990,13 @@ static void solids_on_a_floor(double width, bool floor_wins)
 					     support_uniform(0.5, 15));
 		}
 		r.dir = vec3_sub(p, r.origin);
-		a = accel_intersect(s->accel, &r, 1e-9, &ta);
 		b = brute_nearest(s, &r, 1e-9, &tb);
-		assert_ptr_equal(a, b);
-		assert_memory_equal(&ta, &tb, sizeof(ta));
+		for (k = 0; k < w.n; k++) {
+			ta = INFINITY;
+			a = accel_intersect(w.a[k], &r, 1e-9, &ta);
+			assert_ptr_equal(a, b);
+			assert_memory_equal(&ta, &tb, sizeof(ta));
+		}
 		if (b == (floor_wins ? floor : target) &&
 		    shape_intersect(floor_wins ? target : floor, &r, 1e-9, &tf) && tf == tb)
 			ties++;
@@ -934,6 +1005,7 @@ static void solids_on_a_floor(double width, bool floor_wins)
 	print_message("%d of the rays tie a solid with the %s floor\n", ties,
 		      floor_wins ? "infinite" : "finite");
 	assert_true(ties > 100);
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
@@ -953,9 +1025,11 @@ static void test_accel_pyramid_edge_on_the_floor(void **state)
 {
 	struct scene *s = scene_create("edge");
 	const struct shape *pyramid, *a, *b;
+	struct walk_set w;
 	struct diag d;
 	struct ray r;
-	double ta = INFINITY, tb = INFINITY;
+	double ta, tb = INFINITY;
+	int k;
 
 	(void)state;
 	pyramid = pyramid_create_centred(vec3_make(40, 30, 0), 60, 70, &mat);
@@ -964,11 +1038,16 @@ static void test_accel_pyramid_edge_on_the_floor(void **state)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	r.origin = vec3_make(2.2071085321150985, -188.01497193346586, 9.400748596673294);
 	r.dir = vec3_make(0.18089149926016515, 0.98227597967414304, -0.049113798983707158);
-	a = accel_intersect(s->accel, &r, 1e-9, &ta);
 	b = brute_nearest(s, &r, 1e-9, &tb);
 	assert_ptr_equal(b, pyramid);
-	assert_ptr_equal(a, b);
-	assert_memory_equal(&ta, &tb, sizeof(ta));
+	walk_set_build(&w, s);
+	for (k = 0; k < w.n; k++) {
+		ta = INFINITY;
+		a = accel_intersect(w.a[k], &r, 1e-9, &ta);
+		assert_ptr_equal(a, b);
+		assert_memory_equal(&ta, &tb, sizeof(ta));
+	}
+	walk_set_free(&w);
 	scene_destroy(s);
 }
 
@@ -1013,6 +1092,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_accel_threads_build_the_same_tree),
 		cmocka_unit_test(test_accel_threads_median_splits),
 		cmocka_unit_test(test_accel_threads_collapse_the_same_tree),
+		cmocka_unit_test(test_accel_collapse_room_holds_the_fullest_tree),
 		cmocka_unit_test(test_accel_ties_go_to_the_first_in_the_scene),
 		cmocka_unit_test(test_accel_solids_on_the_floor_tie_at_their_edges),
 		cmocka_unit_test(test_accel_huge_boxes_are_tested_by_every_ray),
