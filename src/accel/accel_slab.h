@@ -31,4 +31,18 @@ static inline void ray_slab_init(struct ray_slab *rs, const struct ray *r)
 		rs->near[k] = rs->inv[k] < 0.0;
 }
 
+/* Where a node of `width` children keeps each axis's near and far
+ * planes, in floats from its start (lo[3][width], then hi[3][width]): the
+ * box tests read a plane with one offset, no swap. */
+static inline void ray_slab_offsets(const struct ray_slab *rs, int width, int near_off[3],
+				    int far_off[3])
+{
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		near_off[k] = rs->near[k] * 3 * width + width * k;
+		far_off[k] = (1 - rs->near[k]) * 3 * width + width * k;
+	}
+}
+
 #endif

@@ -33,9 +33,8 @@ static inline void walk_ray_init(struct walk_ray *v, const struct ray_slab *rs)
 	for (k = 0; k < 3; k++) {
 		v->o[k] = _mm512_set1_pd(rs->o[k]);
 		v->inv[k] = _mm512_set1_pd(rs->inv[k]);
-		v->near_off[k] = rs->near[k] * 3 * ACCEL_W + ACCEL_W * k;
-		v->far_off[k] = (1 - rs->near[k]) * 3 * ACCEL_W + ACCEL_W * k;
 	}
+	ray_slab_offsets(rs, ACCEL_W, v->near_off, v->far_off);
 }
 
 /* A plane of the eight children: 32 bytes, at a multiple of 32 in the
