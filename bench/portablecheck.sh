@@ -18,6 +18,22 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 pass=0 fail=0
 : >"$T/walks"
+# Runs a command that writes image $2, and counts whether it ran and gave
+# the default build's image ($T/sse.ppm) byte for byte; its stderr is
+# left in $T/err.
+same_as_default() {
+	what=$1 out=$2
+	shift 2
+	if ! "$@" 2>"$T/err"; then
+		echo "portablecheck: $scene -j $j: $what fails: $(head -3 "$T/err")"
+		fail=$((fail + 1))
+	elif cmp -s "$T/sse.ppm" "$out"; then
+		pass=$((pass + 1))
+	else
+		echo "portablecheck: $scene -j $j: $what gives another image than the default build"
+		fail=$((fail + 1))
+	fi
+}
 "$BUILD/gen_scene" 12000 >"$T/surface.txt"
 "$BUILD/gen_scene" --layout cloud 3000 >"$T/cloud.txt"
 for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
@@ -27,27 +43,12 @@ for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
 			fail=$((fail + 1))
 			continue
 		fi
-		if ! "$P" -q -j $j -s 96 -o "$T/portable.ppm" "$scene" 2>"$T/err"; then
-			echo "portablecheck: $scene -j $j: the portable build fails: $(head -3 "$T/err")"
-			fail=$((fail + 1))
-		elif cmp -s "$T/sse.ppm" "$T/portable.ppm"; then
-			pass=$((pass + 1))
-		else
-			echo "portablecheck: $scene -j $j: the portable build's image differs"
-			fail=$((fail + 1))
-		fi
+		same_as_default "the portable build" "$T/portable.ppm" \
+			"$P" -q -j $j -s 96 -o "$T/portable.ppm" "$scene"
 		# The narrower walks where the processor would run wider ones.
 		for isa in avx2 sse2; do
-			if ! WHITTED_ISA=$isa "$W" -q --stats -j $j -s 96 -o "$T/$isa.ppm" "$scene" \
-				2>"$T/err"; then
-				echo "portablecheck: $scene -j $j: the walk under WHITTED_ISA=$isa fails: $(head -3 "$T/err")"
-				fail=$((fail + 1))
-			elif cmp -s "$T/sse.ppm" "$T/$isa.ppm"; then
-				pass=$((pass + 1))
-			else
-				echo "portablecheck: $scene -j $j: the image under WHITTED_ISA=$isa differs from the default's"
-				fail=$((fail + 1))
-			fi
+			same_as_default "the walk under WHITTED_ISA=$isa" "$T/$isa.ppm" \
+				env WHITTED_ISA=$isa "$W" -q --stats -j $j -s 96 -o "$T/$isa.ppm" "$scene"
 			sed -n 's/.*, \([a-z0-9]*\) walk).*/\1/p' "$T/err" >>"$T/walks"
 		done
 		"$W" -q --stats -j $j -s 8 -o "$T/w.ppm" "$scene" 2>&1 |

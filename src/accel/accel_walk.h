@@ -45,11 +45,15 @@ static inline void prefetch_children(const struct accel *a, const uint32_t *slot
 		if (accel_slot_is_node(slot)) {
 			const char *p = (const char *)a->nodes + accel_slot_index(slot) * node_bytes;
 			size_t line;
-			/* Every line the node touches: a 112-byte node from a
-			 * 48-byte offset spans three. */
 			for (line = 0; line < node_bytes; line += 64)
 				__builtin_prefetch(p + line);
-			if (node_bytes % 64 != 0)
+			/* And the last line where a node can end in one the
+			 * loop missed: nodes lie at multiples of the lowest
+			 * bit of their size from a line's start, so a
+			 * 112-byte node from 48 bytes on spans three lines;
+			 * a 224-byte one (from 0 or 32) never needs this. */
+			if (64 - ((node_bytes & -node_bytes) < 64 ? (node_bytes & -node_bytes) : 64) +
+				    node_bytes > (node_bytes + 63) / 64 * 64)
 				__builtin_prefetch(p + node_bytes - 1);
 		} else if (accel_slot_tag(slot) > 0) {
 			__builtin_prefetch(a->bounded[accel_slot_index(slot)]);

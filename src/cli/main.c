@@ -7,10 +7,12 @@
  * (compare and grade add 3: an image differs). */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "cli/tool.h"
+#include "whitted/scene.h"
 
 volatile sig_atomic_t cli_cancelled;
 
@@ -37,6 +39,17 @@ void cli_set_signals(void)
 	signal(SIGXFSZ, SIG_IGN);
 }
 
+/* The commands that render (all but merge) say when WHITTED_ISA is not
+ * one the walks understand (they then ignore it). */
+static void warn_walk_cap(void)
+{
+	const char *isa = scene_walk_cap_unknown();
+
+	if (isa)
+		fprintf(stderr, "%s: warning: WHITTED_ISA=%s names no walk (sse2, avx2 or avx512): "
+			"ignored\n", tool_name(), isa);
+}
+
 int main(int argc, char **argv)
 {
 	/* A subcommand comes first; a scene file named "merge", "compare" or
@@ -47,12 +60,15 @@ int main(int argc, char **argv)
 	}
 	if (argc >= 2 && strcmp(argv[1], "compare") == 0) {
 		tool_set_name("whitted compare");
+		warn_walk_cap();
 		return compare_main(argc - 1, argv + 1);
 	}
 	if (argc >= 2 && strcmp(argv[1], "grade") == 0) {
 		tool_set_name("whitted grade");
+		warn_walk_cap();
 		return grade_main(argc - 1, argv + 1);
 	}
 	tool_set_name("whitted");
+	warn_walk_cap();
 	return render_main(argc, argv);
 }

@@ -300,9 +300,6 @@ int render_main(int argc, char **argv)
 	struct options o;
 	int status = render_args_parse(argc, argv, &o);
 
-	if (scene_walk_cap_unknown())
-		fprintf(stderr, "%s: warning: WHITTED_ISA=%s names no walk (sse2, avx2 or avx512): "
-			"ignored\n", tool_name(), scene_walk_cap_unknown());
 	if (status == 0 && o.scene.list_shapes) {
 		status = list_shapes(&o);
 	} else if (status == 0) {
