@@ -100,13 +100,15 @@ $(BUILD)/san/%.o: %.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -c $< -o $@
 
-# The hierarchy's AVX2 and AVX-512 walks are compiled for them on x86 (the
-# rest of the program for the baseline) and chosen at run time by what the
-# processor has (src/accel/accel_build.c); no contraction into FMA, which
-# would change the box tests' rounding.
+# The hierarchy's AVX2 and AVX-512 walks and the packets' shape tests are
+# compiled for them on x86 (the rest of the program for the baseline) and
+# chosen at run time by what the processor has (src/accel/accel_build.c,
+# src/base/simd.c); no contraction into FMA, which would change the
+# rounding.
 ifneq ($(filter x86_64% amd64% i%86%,$(shell $(CC) -dumpmachine)),)
-%/accel/accel_walk_avx2.o: ALL_CFLAGS += -mavx2 -ffp-contract=off
-%/accel/accel_walk_avx512.o: ALL_CFLAGS += -mavx512f -ffp-contract=off
+%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o: ALL_CFLAGS += -mavx2 -ffp-contract=off
+%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o: \
+	ALL_CFLAGS += -mavx512f -ffp-contract=off
 endif
 
 $(BUILD)/libwhitted.a: $(LIB_OBJ)

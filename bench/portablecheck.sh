@@ -49,10 +49,10 @@ for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
 		for isa in avx2 sse2; do
 			same_as_default "the walk under WHITTED_ISA=$isa" "$T/$isa.ppm" \
 				env WHITTED_ISA=$isa "$W" -q --stats -j $j -s 96 -o "$T/$isa.ppm" "$scene"
-			sed -n 's/.*, \([a-z0-9]*\) walk).*/\1/p' "$T/err" >>"$T/walks"
+			sed -n 's/.*, \([a-z0-9]*\) walk, .*/\1/p' "$T/err" >>"$T/walks"
 		done
 		"$W" -q --stats -j $j -s 8 -o "$T/w.ppm" "$scene" 2>&1 |
-			sed -n 's/.*, \([a-z0-9]*\) walk).*/\1/p' >>"$T/walks"
+			sed -n 's/.*, \([a-z0-9]*\) walk, .*/\1/p' >>"$T/walks"
 	done
 done
 echo "portablecheck: $pass passed, $fail failed; walks compared with the portable build's: $(sort -u "$T/walks" | tr '\n' ' ')portable"

@@ -50,8 +50,9 @@
  * up by one with ANY change of the size, member order, member types or
  * meaning of what a plugin sees:
  *     struct shape_ops, struct shape, struct material, struct color,
- *     struct vec3, struct ray, struct aabb (shape.h, material.h, vec3.h,
- *     ray.h, aabb.h), struct mesh, struct mesh_texture, struct mesh_uv,
+ *     struct vec3, struct ray, struct aabb, struct ray_packet,
+ *     RT_PACKET_MAX, RT_PACKET_RUN (shape.h, material.h, vec3.h, ray.h,
+ *     aabb.h), struct mesh, struct mesh_texture, struct mesh_uv,
  *     struct mesh_options, RT_MESH_TEXELS_MAX, RT_MESH_FLOATS_PER_VERTEX
  *     (mesh.h), struct pov_options (pov.h), struct whitted_plugin_host (a member added at its end too:
  *     host->size is informational only) and struct whitted_plugin (here),
@@ -67,7 +68,10 @@
  * host->solve_quadratic and host->ray_triangle, struct material's kt and
  * ior, struct shape_ops' specular_color_at and closed, struct
  * pov_options' shadow_twin and floor_texture; 3: struct shape_ops'
- * intersect_packet (at its end) and RT_PACKET_MAX (shape.h). */
+ * intersect_packet (at its end) and RT_PACKET_MAX (shape.h); 4:
+ * intersect_packet takes its rays as a struct ray_packet (a coordinate an
+ * array, so that a method can load a run of rays into a vector register)
+ * and may read whole runs of RT_PACKET_RUN rays. */
 #ifndef RT_PLUGIN_H
 #define RT_PLUGIN_H
 
@@ -80,7 +84,7 @@
 #include "shape.h"
 #include "vec3.h"
 
-#define WHITTED_PLUGIN_ABI 3
+#define WHITTED_PLUGIN_ABI 4
 
 /* Defines the symbol the host checks first; write it once in the plugin's
  * file, at file scope. */

@@ -145,6 +145,9 @@ size_t scene_hierarchy_bytes(const struct scene *s);
 /* Which box tests the hierarchy's walks use: "avx512", "avx2", "sse2" or
  * "portable" (see WHITTED_ISA in whitted(1)). */
 const char *scene_hierarchy_walk(const struct scene *s);
+/* How the renderer's packets of coherent rays go, for --stats: "no
+ * packets", or e.g. "avx512 packets, a ray a lane". */
+const char *scene_hierarchy_packets(const struct scene *s);
 /* WHITTED_ISA's value when it is set to something other than sse2, avx2
  * or avx512 (and so caps nothing), for the programs to warn; else NULL. */
 const char *scene_walk_cap_unknown(void);

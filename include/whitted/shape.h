@@ -15,6 +15,36 @@
 
 /* The most rays intersect_packet is given at once: the bits of its mask. */
 #define RT_PACKET_MAX 32
+/* intersect_packet may read whole runs of this many rays (0-7, 8-15,
+ * ...): see there. */
+#define RT_PACKET_RUN 8
+
+/* intersect_packet's rays, a coordinate an array: so that a method can
+ * take a run of rays into one vector register a coordinate. */
+struct ray_packet {
+	double ox[RT_PACKET_MAX], oy[RT_PACKET_MAX], oz[RT_PACKET_MAX];
+	double dx[RT_PACKET_MAX], dy[RT_PACKET_MAX], dz[RT_PACKET_MAX];
+};
+
+/* Ray i of a packet. */
+static inline struct ray ray_packet_get(const struct ray_packet *p, int i)
+{
+	struct ray r;
+
+	r.origin = vec3_make(p->ox[i], p->oy[i], p->oz[i]);
+	r.dir = vec3_make(p->dx[i], p->dy[i], p->dz[i]);
+	return r;
+}
+
+static inline void ray_packet_set(struct ray_packet *p, int i, const struct ray *r)
+{
+	p->ox[i] = r->origin.x;
+	p->oy[i] = r->origin.y;
+	p->oz[i] = r->origin.z;
+	p->dx[i] = r->dir.x;
+	p->dy[i] = r->dir.y;
+	p->dz[i] = r->dir.z;
+}
 
 struct mesh;
 struct mesh_options;
@@ -73,16 +103,18 @@ struct shape_ops {
 	 * closed (a triangle, an open or clipped quadric), which --glass
 	 * accepts with a note. */
 	bool (*closed)(const struct shape *s);
-	/* Optional (ABI 3).  intersect for each ray r[i] whose bit i is set
-	 * in `active` (i < RT_PACKET_MAX), in (t_min[i], t_max[i]), shrinking
-	 * t_max[i] on a hit; the mask of the rays hit.  Each ray's answer
-	 * must be intersect's to the bit (the same hit, the same t): images
-	 * do not depend on which of the two ran.  Only the entries whose bit
-	 * is set may be read or written (the host's arrays may be shorter
-	 * than RT_PACKET_MAX); bits outside `active` in the result are
-	 * ignored.  NULL: intersect, ray by ray. */
-	uint32_t (*intersect_packet)(const struct shape *s, const struct ray *r, uint32_t active,
-				     const double *t_min, double *t_max);
+	/* Optional (ABI 4).  intersect for each ray i of p whose bit i is
+	 * set in `active` (i < RT_PACKET_MAX), in (t_min[i], t_max[i]),
+	 * shrinking t_max[i] on a hit; the mask of the rays hit.  Each ray's
+	 * answer must be intersect's to the bit (the same hit, the same t):
+	 * images do not depend on which of the two ran.  The method may read
+	 * every ray (and t_min, t_max) of a run of RT_PACKET_RUN that holds
+	 * an active one (the host fills the others with some ray), so that it
+	 * can test a run at once; t_max[i] of a ray not hit keeps its value
+	 * (a method may store it back).  Bits outside `active` in the result
+	 * are ignored.  NULL: intersect, ray by ray. */
+	uint32_t (*intersect_packet)(const struct shape *s, const struct ray_packet *p,
+				     uint32_t active, const double *t_min, double *t_max);
 };
 
 struct shape {
@@ -97,7 +129,7 @@ static inline bool shape_intersect(const struct shape *s, const struct ray *r,
 }
 
 /* See intersect_packet. */
-static inline uint32_t shape_intersect_packet(const struct shape *s, const struct ray *r,
+static inline uint32_t shape_intersect_packet(const struct shape *s, const struct ray_packet *p,
 					      uint32_t active, const double *t_min, double *t_max)
 {
 	uint32_t hit = 0;
@@ -106,10 +138,15 @@ static inline uint32_t shape_intersect_packet(const struct shape *s, const struc
 	/* A method's stray bits would give other rays hits they do not have
 	 * (and index past the caller's arrays). */
 	if (s->ops->intersect_packet)
-		return s->ops->intersect_packet(s, r, active, t_min, t_max) & active;
-	for (i = 0; i < RT_PACKET_MAX && active >> i; i++)
-		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
+		return s->ops->intersect_packet(s, p, active, t_min, t_max) & active;
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		struct ray r;
+		if (!(active >> i & 1))
+			continue;
+		r = ray_packet_get(p, i);
+		if (s->ops->intersect(s, &r, t_min[i], t_max + i))
 			hit |= (uint32_t)1 << i;
+	}
 	return hit;
 }
 

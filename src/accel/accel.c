@@ -138,7 +138,6 @@ static inline int node_hits(const struct bvh4_node *node, const struct walk_ray 
 
 #define ACCEL_WALK(name) walk_sse2_##name
 #include "accel/accel_walk.h"
-#include "accel/accel_packet.h"
 
 const struct shape *accel_intersect(const struct accel *a, const struct ray *r,
 				    double t_min, double *t_max)
@@ -176,7 +175,12 @@ void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 		accel_avx2_intersect_packet(a, r, n, t_min, t_max, hit);
 		break;
 	default:
-		walk_sse2_intersect_packet(a, r, n, t_min, t_max, hit);
+		if (a->rays == ACCEL_WALK_AVX512)
+			accel_avx512_rays_intersect_packet(a, r, n, t_min, t_max, hit);
+		else if (a->rays == ACCEL_WALK_AVX2)
+			accel_avx2_rays_intersect_packet(a, r, n, t_min, t_max, hit);
+		else
+			accel_rays_intersect_packet(a, r, n, t_min, t_max, hit);
 	}
 }
 
@@ -189,26 +193,64 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	case ACCEL_WALK_AVX2:
 		return accel_avx2_occluded_packet(a, r, n, t_min, t_max);
 	default:
-		return walk_sse2_occluded_packet(a, r, n, t_min, t_max);
+		if (a->rays == ACCEL_WALK_AVX512)
+			return accel_avx512_rays_occluded_packet(a, r, n, t_min, t_max);
+		if (a->rays == ACCEL_WALK_AVX2)
+			return accel_avx2_rays_occluded_packet(a, r, n, t_min, t_max);
+		return accel_rays_occluded_packet(a, r, n, t_min, t_max);
 	}
 }
 
 bool accel_packets_pay(const struct accel *a)
 {
-	return a->walk != ACCEL_WALK_BASE;
+	return a->walk != ACCEL_WALK_BASE || a->rays != ACCEL_WALK_BASE;
 }
 
-const char *accel_walk_name(const struct accel *a)
+bool accel_packets_wanted(const struct accel *a)
 {
-	if (a && a->walk == ACCEL_WALK_AVX512)
+	const char *p = getenv("WHITTED_PACKETS");
+
+	if (p && strcmp(p, "0") == 0)
+		return false;
+	if (p && strcmp(p, "1") == 0)
+		return true;
+	return a && accel_packets_pay(a);
+}
+
+static const char *walk_isa(enum accel_walk w)
+{
+	if (w == ACCEL_WALK_AVX512)
 		return "avx512";
-	if (a && a->walk == ACCEL_WALK_AVX2)
+	if (w == ACCEL_WALK_AVX2)
 		return "avx2";
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
 	return "sse2";
 #else
 	return "portable";
 #endif
+}
+
+const char *accel_packets_name(const struct accel *a)
+{
+	static const char *const rays[] = { NULL, "avx2 packets, a ray a lane",
+					    "avx512 packets, a ray a lane" };
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+	const char *base_rays = "sse2 packets, a ray a lane";
+#else
+	const char *base_rays = "portable packets, a ray a lane";
+#endif
+
+	if (!a || !accel_packets_wanted(a))
+		return "no packets";
+	if (a->walk != ACCEL_WALK_BASE)
+		return a->walk == ACCEL_WALK_AVX512 ? "avx512 packets, a child a lane"
+						    : "avx2 packets, a child a lane";
+	return a->rays == ACCEL_WALK_BASE ? base_rays : rays[a->rays];
+}
+
+const char *accel_walk_name(const struct accel *a)
+{
+	return walk_isa(a ? a->walk : ACCEL_WALK_BASE);
 }
 
 /* WHITTED_ISA caps the walks (sse2, avx2, avx512; unset or anything

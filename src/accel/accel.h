@@ -39,11 +39,19 @@ void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
 			       const double *t_min, const double *t_max);
 /* Whether packets are faster than single rays here: where the walks have
- * the AVX2 or AVX-512 box tests (a tree big enough; see accel_build.c).  The plain-C
- * ones (SSE2 and portable builds) test ray by ray, slower than the single
- * walks, and in a small tree the packets' set-up costs more than their
- * walk saves (the course example: 6% more instructions). */
+ * the AVX2 or AVX-512 box tests (a tree big enough; see accel_build.c),
+ * or a small tree's packets go a ray a vector lane in AVX2 or AVX-512
+ * (accel_packet_rays.h: the course example 0.78x the time of single
+ * rays).  With SSE2's two lanes alone they gain nothing. */
 bool accel_packets_pay(const struct accel *a);
+/* Whether the renderer traces packets: where they pay, unless
+ * WHITTED_PACKETS=0 asks for one ray at a time or WHITTED_PACKETS=1 for
+ * packets anyway (to compare: the images are the same). */
+bool accel_packets_wanted(const struct accel *a);
+/* How the packets go, for --stats: "no packets", or the instructions and
+ * whether a vector lane is a ray (a small tree's packets) or a node's
+ * child (a big tree's). */
+const char *accel_packets_name(const struct accel *a);
 
 /* Which box tests the walks use ("avx512", "avx2", "sse2" or
  * "portable"), for --stats. */

@@ -348,6 +348,9 @@ int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
 	if (!a)
 		goto out_nomem;
 	a->walk = walk;
+	a->rays = accel_walk_usable(ACCEL_WALK_AVX512) ? ACCEL_WALK_AVX512
+		  : accel_walk_usable(ACCEL_WALK_AVX2) ? ACCEL_WALK_AVX2
+						       : ACCEL_WALK_BASE;
 	if (collect_refs(shapes, n_shapes, threads, width, a, &b) < 0)
 		goto out_free;
 	if (a->n_bounded > 0) {

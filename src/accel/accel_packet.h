@@ -16,69 +16,7 @@
 #include "accel/accel.h"
 #include "accel/accel_tree.h"
 
-#ifndef RT_ACCEL_PACKET_COMMON
-#define RT_ACCEL_PACKET_COMMON
-
-/* Tests shape sh, of key `key`, for the rays of `mask` against their
- * best so far. */
-static inline void packet_best_test(const struct shape *sh, uint32_t key, const struct ray *r,
-				    uint32_t mask, const double *t_min, struct walk_best *b)
-{
-	double t[ACCEL_PACKET];
-	uint32_t m;
-
-	for (m = mask; m; m &= m - 1) {
-		int i = __builtin_ctz(m);
-		t[i] = b[i].hit ? next_up(b[i].t) : b[i].t;
-	}
-	for (m = shape_intersect_packet(sh, r, mask, t_min, t); m; m &= m - 1) {
-		int i = __builtin_ctz(m);
-		if (t[i] < b[i].t || key < b[i].key) {
-			b[i].t = t[i];
-			b[i].hit = sh;
-			b[i].key = key;
-		}
-	}
-}
-
-static inline void packet_leaf_nearest(const struct accel *a, uintptr_t slot, const struct ray *r,
-				       uint32_t mask, const double *t_min, struct walk_best *b)
-{
-	size_t pos = accel_slot_index(slot);
-	unsigned count = accel_slot_tag(slot), k;
-
-	for (k = 0; k < count; k++)
-		packet_best_test(a->bounded[pos + k], a->bounded_key[pos + k], r, mask, t_min, b);
-}
-
-/* The rays of `mask` that a leaf's shapes block in (t_min, t_max). */
-static inline uint32_t packet_leaf_any(const struct accel *a, uintptr_t slot,
-				       const struct ray *r, uint32_t mask, const double *t_min,
-				       const double *t_max)
-{
-	size_t pos = accel_slot_index(slot);
-	unsigned count = accel_slot_tag(slot), k;
-	uint32_t blocked = 0, m;
-	double t[ACCEL_PACKET];
-
-	for (k = 0; k < count && mask; k++) {
-		/* A copy for the shape to shrink: a blocker's distance does
-		 * not matter here. */
-		for (m = mask; m; m &= m - 1)
-			t[__builtin_ctz(m)] = t_max[__builtin_ctz(m)];
-		m = shape_intersect_packet(a->bounded[pos + k], r, mask, t_min, t);
-		blocked |= m;
-		mask &= ~m;
-	}
-	return blocked;
-}
-
-static inline uint32_t packet_all(int n)
-{
-	return n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1;
-}
-
-#endif
+#include "accel/accel_packet_common.h"
 
 static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
 					 const double *t_min, double *t_max,
@@ -87,17 +25,19 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 	struct { uintptr_t slot; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
 	struct walk_ray v[ACCEL_PACKET];
 	struct walk_best b[ACCEL_PACKET];
+	struct packet_shape_rays sr;
 	uint32_t all = packet_all(n);
 	size_t i;
 	int top = 0;
 
-	for (i = 0; i < (size_t)n; i++) {
-		b[i].t = t_max[i];
+	packet_shape_rays_load(&sr, r, n, t_min);
+	for (i = 0; i < ACCEL_PACKET; i++) {
+		b[i].t = t_max[i < (size_t)n ? i : 0];
 		b[i].hit = NULL;
 		b[i].key = 0;
 	}
 	for (i = 0; i < a->n_unbounded; i++)
-		packet_best_test(a->unbounded[i], a->unbounded_key[i], r, all, t_min, b);
+		packet_best_test(a->unbounded[i], a->unbounded_key[i], &sr, all, b);
 	if (a->n_nodes > 0 && all) {
 		for (i = 0; i < (size_t)n; i++) {
 			struct ray_slab rs;
@@ -119,7 +59,7 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 		slot = stack[top].slot;
 		mask = stack[top].mask;
 		if (!accel_slot_is_node(slot)) {
-			packet_leaf_nearest(a, slot, r, mask, t_min, b);
+			packet_leaf_nearest(a, slot, &sr, mask, b);
 			continue;
 		}
 		if (!(mask & (mask - 1))) {
@@ -167,14 +107,18 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 {
 	struct { size_t node; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
 	struct walk_ray v[ACCEL_PACKET];
+	struct packet_shape_rays sr;
 	uint32_t all = packet_all(n), open = all;
-	double t[ACCEL_PACKET];
+	double t[ACCEL_PACKET], t_far[ACCEL_PACKET];
 	size_t i;
 	int top = 0;
 
+	packet_shape_rays_load(&sr, r, n, t_min);
+	for (i = 0; i < ACCEL_PACKET; i++)
+		t_far[i] = t_max[i < (size_t)n ? i : 0];
 	for (i = 0; i < a->n_unbounded && open; i++) {
-		memcpy(t, t_max, (size_t)n * sizeof(*t));
-		open &= ~shape_intersect_packet(a->unbounded[i], r, open, t_min, t);
+		memcpy(t, t_far, sizeof(t));
+		open &= ~shape_intersect_packet(a->unbounded[i], &sr.p, open, sr.t_min, t);
 	}
 	if (a->n_nodes == 0 || !open)
 		return all & ~open;
@@ -217,7 +161,7 @@ static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct 
 				stack[top++].mask = child[c];
 				continue;
 			}
-			open &= ~packet_leaf_any(a, s, r, child[c] & open, t_min, t_max);
+			open &= ~packet_leaf_any(a, s, &sr, child[c] & open, t_far);
 			if (!open)
 				return all;
 		}

@@ -136,6 +136,9 @@ struct accel {
 	uint32_t *unbounded_key;	/* 0, 1, ... */
 	size_t n_unbounded;
 	enum accel_walk walk;
+	/* A four-child tree's packets go a ray a lane (accel_packet_rays.h),
+	 * in these walks' instructions: the widest usable at the build. */
+	enum accel_walk rays;
 };
 
 /* accel_build with the walks `walk` (and their tree's width) whatever
@@ -180,5 +183,22 @@ void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, i
 uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				      const double *t_min, const double *t_max);
 bool accel_avx512_compiled(void);
+
+/* The packets through a four-child tree, a ray a vector lane
+ * (accel_packet_rays.h): in SSE2 or plain C (accel_packet_rays.c), AVX2
+ * and AVX-512 (the walks' files); accel_intersect_packet's contract. */
+void accel_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				 const double *t_min, double *t_max, const struct shape **hit);
+uint32_t accel_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
+				    const double *t_min, const double *t_max);
+void accel_avx2_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
+				      const double *t_min, double *t_max, const struct shape **hit);
+uint32_t accel_avx2_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
+					 const double *t_min, const double *t_max);
+void accel_avx512_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
+					const double *t_min, double *t_max,
+					const struct shape **hit);
+uint32_t accel_avx512_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
+					   const double *t_min, const double *t_max);
 
 #endif

@@ -81,6 +81,8 @@ static inline int node_hits(const struct bvh8_node *node, const struct walk_ray 
 #define ACCEL_WALK(name) walk_avx2_##name
 #include "accel/accel_walk.h"
 #include "accel/accel_packet.h"
+#define RAYS_WALK(name) rays_avx2_##name
+#include "accel/accel_packet_rays.h"
 
 #define ACCEL_COMPILED 1
 #endif

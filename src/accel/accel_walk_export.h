@@ -36,6 +36,19 @@ uint32_t ACCEL_EXPORT(occluded_packet)(const struct accel *a, const struct ray *
 	return ACCEL_WALK(occluded_packet)(a, r, n, t_min, t_max);
 }
 
+void ACCEL_EXPORT(rays_intersect_packet)(const struct accel *a, const struct ray *r, int n,
+					 const double *t_min, double *t_max,
+					 const struct shape **hit)
+{
+	RAYS_WALK(intersect_packet)(a, r, n, t_min, t_max, hit);
+}
+
+uint32_t ACCEL_EXPORT(rays_occluded_packet)(const struct accel *a, const struct ray *r, int n,
+					    const double *t_min, const double *t_max)
+{
+	return RAYS_WALK(occluded_packet)(a, r, n, t_min, t_max);
+}
+
 bool ACCEL_EXPORT(compiled)(void)
 {
 	return true;
@@ -81,6 +94,19 @@ uint32_t ACCEL_EXPORT(occluded_packet)(const struct accel *a, const struct ray *
 	(void)t_min;
 	(void)t_max;
 	return 0;
+}
+
+void ACCEL_EXPORT(rays_intersect_packet)(const struct accel *a, const struct ray *r, int n,
+					 const double *t_min, double *t_max,
+					 const struct shape **hit)
+{
+	ACCEL_EXPORT(intersect_packet)(a, r, n, t_min, t_max, hit);
+}
+
+uint32_t ACCEL_EXPORT(rays_occluded_packet)(const struct accel *a, const struct ray *r, int n,
+					    const double *t_min, const double *t_max)
+{
+	return ACCEL_EXPORT(occluded_packet)(a, r, n, t_min, t_max);
 }
 
 bool ACCEL_EXPORT(compiled)(void)

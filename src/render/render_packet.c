@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "render/camera_span.h"
 #include "render/render_packet.h"
 #include "render/shade_hit.h"
 #include "render/shade_math.h"
@@ -19,58 +20,92 @@
 
 bool render_packets_wanted(const struct accel *a)
 {
-	const char *p = getenv("WHITTED_PACKETS");
+	return accel_packets_wanted(a);
+}
 
-	if (p && strcmp(p, "0") == 0)
-		return false;
-	if (p && strcmp(p, "1") == 0)
-		return true;
-	return accel_packets_pay(a);
+/* Packets go down this many levels of reflection; deeper ones are traced
+ * ray by ray by the shading (a level's frame is about 11 KiB of stack). */
+#define PACKET_DEPTH 8
+
+/* The colours of the rays r[0..n) (n <= ACCEL_PACKET) at `level`, as
+ * render_trace gives them: the nearest hits in one packet, their shadow
+ * rays in one packet a light, and their reflections (the mirrors' that
+ * are not glass) in one packet more, a level down. */
+static void shade_packet(const struct render_job *job, const struct ray *r, int n, int level,
+			 struct ray_counts *counts, struct color *out)
+{
+	const struct scene *sc = job->scene;
+	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
+	const struct shape *hit[ACCEL_PACKET];
+	struct render_point h[ACCEL_PACKET];
+	struct render_shadows shadows;
+	struct ray bounce[ACCEL_PACKET];
+	struct color seen[ACCEL_PACKET];
+	int slot[ACCEL_PACKET], nb = 0, i;
+	uint32_t hits = 0;
+
+	for (i = 0; i < n; i++) {
+		t_min[i] = render_offset(r[i].origin);
+		t[i] = INFINITY;
+	}
+	accel_intersect_packet(sc->accel, r, n, t_min, t, hit);
+	for (i = 0; i < n; i++) {
+		slot[i] = -1;
+		if (!hit[i])
+			continue;
+		render_point_at(&r[i], t[i], hit[i], &h[i]);
+		hits |= (uint32_t)1 << i;
+		if (level < PACKET_DEPTH && render_reflects(&job->settings, &h[i], level)) {
+			render_bounce(&h[i], &bounce[nb]);
+			slot[i] = nb++;
+		}
+	}
+	render_shadow_packets(sc, h, hits, &shadows);
+	if (nb > 0)
+		shade_packet(job, bounce, nb, level + 1, counts, seen);
+	for (i = 0; i < n; i++) {
+		out[i] = color_make(0.0, 0.0, 0.0);
+		shadows.bit = i;
+		if (hit[i])
+			out[i] = render_shade_point(sc, &job->settings, &r[i], &h[i], level, counts,
+						    &shadows, slot[i] >= 0 ? &seen[slot[i]] : NULL);
+	}
 }
 
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, struct ray_counts *counts)
 {
-	const struct scene *sc = job->scene;
-	int px, py;
+	struct camera_span span;
+	int px, py, w = x1 - x0;
 
-	for (py = y0; py < y1; py += PACKET_SIDE)
-		for (px = x0; px < x1; px += PACKET_SIDE) {
+	camera_span_init(&span, job->camera, x0, x1);
+	for (py = y0; py < y1; py += PACKET_SIDE) {
+		/* The rays of PACKET_SIDE rows at once, as render_block makes
+		 * them; then each packet of PACKET_SIDE x PACKET_SIDE. */
+		struct ray rows[PACKET_SIDE][CAMERA_SPAN_MAX];
+		uint8_t bytes[PACKET_SIDE][CAMERA_SPAN_MAX * 3];
+		int rows_n = y1 - py < PACKET_SIDE ? y1 - py : PACKET_SIDE, y;
+
+		for (y = 0; y < rows_n; y++)
+			camera_span_rays(&span, job->camera, py + y, rows[y]);
+		for (px = 0; px < w; px += PACKET_SIDE) {
 			struct ray r[PACKET_SIDE * PACKET_SIDE];
-			double t_min[PACKET_SIDE * PACKET_SIDE], t[PACKET_SIDE * PACKET_SIDE];
-			const struct shape *hit[PACKET_SIDE * PACKET_SIDE];
-			struct render_point h[PACKET_SIDE * PACKET_SIDE];
-			struct render_shadows shadows;
-			uint32_t hits = 0;
-			int n = 0, i, x, y;
+			struct color c[PACKET_SIDE * PACKET_SIDE];
+			int cols = w - px < PACKET_SIDE ? w - px : PACKET_SIDE, n = 0, i = 0, x;
 
-			for (y = py; y < py + PACKET_SIDE && y < y1; y++)
-				for (x = px; x < px + PACKET_SIDE && x < x1; x++) {
-					r[n] = camera_ray(job->camera, x, y);
-					t_min[n] = render_offset(r[n].origin);
-					t[n++] = INFINITY;
-				}
-			accel_intersect_packet(sc->accel, r, n, t_min, t, hit);
-			for (i = 0; i < n; i++)
-				if (hit[i]) {
-					render_point_at(&r[i], t[i], hit[i], &h[i]);
-					hits |= (uint32_t)1 << i;
-				}
-			render_shadow_packets(sc, h, hits, &shadows);
-			i = 0;
-			for (y = py; y < py + PACKET_SIDE && y < y1; y++)
-				for (x = px; x < px + PACKET_SIDE && x < x1; x++, i++) {
-					uint8_t *out = img->pixels +
-						       ((size_t)(y - job->y0) * (size_t)img->width +
-							(size_t)(x - job->x0)) * 3;
-					struct color c = color_make(0.0, 0.0, 0.0);
-
-					counts->primary++;
-					shadows.bit = i;
-					if (hit[i])
-						c = render_shade_point(sc, &job->settings, &r[i], &h[i],
-								       counts, &shadows);
-					render_color_to_rgb8(c, out);
-				}
+			for (y = 0; y < rows_n; y++)
+				for (x = px; x < px + cols; x++)
+					r[n++] = rows[y][x];
+			shade_packet(job, r, n, 1, counts, c);
+			counts->primary += (uint64_t)n;
+			for (y = 0; y < rows_n; y++)
+				for (x = px; x < px + cols; x++)
+					render_color_to_rgb8(c[i++], bytes[y] + x * 3);
 		}
+		/* A row's bytes go out at once, as render_block's. */
+		for (y = 0; y < rows_n; y++)
+			memcpy(img->pixels + ((size_t)(py + y - job->y0) * (size_t)img->width +
+					      (size_t)(x0 - job->x0)) * 3,
+			       bytes[y], (size_t)w * 3);
+	}
 }

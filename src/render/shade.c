@@ -106,10 +106,16 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 			int b = __builtin_ctz(m);
 			const struct render_point *q = &h[b];
 			struct vec3 to_light = vec3_sub(lt->pos, q->p), l;
-			double dist = vec3_length(to_light);
+			double dist = vec3_length(to_light), nl;
 
 			l = vec3_scale(to_light, 1.0 / dist);
-			if (!(dist > q->eps) || vec3_dot(q->n, l) <= 0.0)
+			nl = vec3_dot(q->n, l);
+			if (j < RENDER_SHADOW_KEPT) {
+				out->l[j][b] = l;
+				out->dist[j][b] = dist;
+				out->nl[j][b] = nl;
+			}
+			if (!(dist > q->eps) || nl <= 0.0)
 				continue;
 			if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
 				continue;
@@ -152,7 +158,15 @@ static inline struct color render_direct(const struct scene *s, const struct mat
 		 * the previous light's shadow ray.  (A light at the point gives
 		 * an infinite l here, which the test below never uses.) */
 		for (i = 0; i < nb; i++) {
-			struct vec3 to_light = vec3_sub(s->lights[i0 + i].pos, p);
+			struct vec3 to_light;
+
+			if (pre && i0 + i < RENDER_SHADOW_KEPT) {
+				l[i] = pre->l[i0 + i][pre->bit];
+				dist[i] = pre->dist[i0 + i][pre->bit];
+				nl[i] = pre->nl[i0 + i][pre->bit];
+				continue;
+			}
+			to_light = vec3_sub(s->lights[i0 + i].pos, p);
 			dist[i] = vec3_length(to_light);
 			l[i] = vec3_scale(to_light, 1.0 / dist[i]);
 			nl[i] = vec3_dot(n, l[i]);
@@ -282,11 +296,65 @@ static inline void render_point_in(const struct ray *r, double t, const struct s
 	h->eps = render_offset(h->p);
 }
 
-/* The sum at the ray's nearest hit, hit at t, with the answers to its
- * shadow rays that pre has (NULL: each traced here).  Inline in both its
+/* The sum at the ray's nearest hit, the point h, with the answers to its
+ * shadow rays that pre has (NULL: each traced here) and the colour its
+ * reflection sees where `reflected` has it (NULL: traced here).  Inline
+ * in both its
  * callers, the point's values then stay in registers as they did before
  * the packets needed the sum apart from the search (a shared function
  * cost the course example 3% more instructions). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline struct color render_shade_from(const struct scene *s,
+					     const struct render_settings *rs, const struct ray *r,
+					     int level, struct ray_counts *counts,
+					     const struct glass_stack *glass,
+					     const struct render_point *hp,
+					     const struct render_shadows *pre,
+					     const struct color *reflected_pre)
+{
+	const struct shape *hit = hp->hit;
+	const struct material *m = &hit->mat;
+	const struct color *spec;
+	struct color c;
+	bool tir = false;
+	struct vec3 through = { 0.0, 0.0, 0.0 };
+	struct glass_stack beyond;
+
+	spec = hp->spec ? &hp->spec_color : NULL;
+	c = color_scale(hp->base, m->ka);
+	c = color_add(c, s->n_special_lights
+			       ? render_direct_full(s, m, hp->base, spec, hp->p, hp->n, hp->refl, hp->eps, counts,
+						    pre)
+			       : render_direct(s, m, hp->base, spec, hp->p, hp->n, hp->refl, hp->eps, counts, pre));
+	if (level < rs->recursion && m->kt > 0.0) {
+		double eta;
+
+		glass_stack_pass(glass, hit, &beyond, &eta);
+		tir = !render_refract(r->dir, hp->n, hp->dn, eta, &through);
+	}
+	if (level < rs->recursion && (m->kr > 0.0 || tir)) {
+		struct ray bounce;
+		struct color reflected;
+
+		if (counts)
+			counts->reflection++;
+		if (reflected_pre && !tir) {
+			reflected = *reflected_pre;
+		} else {
+			render_bounce(hp, &bounce);
+			reflected = render_trace_in(s, rs, &bounce, level + 1, counts, glass);
+		}
+		c = color_add(c, color_scale(reflected, tir ? 1.0 : m->kr));
+	}
+	if (level < rs->recursion && m->kt > 0.0 && !tir)
+		c = color_add(c, render_transmit(s, rs, hp->p, through, m->kt, hp->eps, level, counts,
+							       &beyond));
+	return rs->clamp == RT_CLAMP_LEVEL ? render_clamp(c) : c;
+}
+
+/* The sum at the ray's nearest hit, hit at t (see render_shade_from). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -297,41 +365,9 @@ static inline struct color render_shade_at(const struct scene *s,
 					   const struct shape *hit, const struct render_shadows *pre)
 {
 	struct render_point h;
-	const struct material *m = &hit->mat;
-	const struct color *spec;
-	struct color c;
-	bool tir = false;
-	struct vec3 through = { 0.0, 0.0, 0.0 };
-	struct glass_stack beyond;
 
 	render_point_in(r, t, hit, &h);
-	spec = h.spec ? &h.spec_color : NULL;
-	c = color_scale(h.base, m->ka);
-	c = color_add(c, s->n_special_lights
-			       ? render_direct_full(s, m, h.base, spec, h.p, h.n, h.refl, h.eps, counts,
-						    pre)
-			       : render_direct(s, m, h.base, spec, h.p, h.n, h.refl, h.eps, counts, pre));
-	if (level < rs->recursion && m->kt > 0.0) {
-		double eta;
-
-		glass_stack_pass(glass, hit, &beyond, &eta);
-		tir = !render_refract(r->dir, h.n, h.dn, eta, &through);
-	}
-	if (level < rs->recursion && (m->kr > 0.0 || tir)) {
-		struct ray bounce;
-		struct color reflected;
-
-		bounce.origin = vec3_add_scaled(h.p, h.refl, h.eps);
-		bounce.dir = h.refl;
-		if (counts)
-			counts->reflection++;
-		reflected = render_trace_in(s, rs, &bounce, level + 1, counts, glass);
-		c = color_add(c, color_scale(reflected, tir ? 1.0 : m->kr));
-	}
-	if (level < rs->recursion && m->kt > 0.0 && !tir)
-		c = color_add(c, render_transmit(s, rs, h.p, through, m->kt, h.eps, level, counts,
-							       &beyond));
-	return rs->clamp == RT_CLAMP_LEVEL ? render_clamp(c) : c;
+	return render_shade_from(s, rs, r, level, counts, glass, &h, pre, NULL);
 }
 
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
@@ -353,12 +389,11 @@ void render_point_at(const struct ray *r, double t, const struct shape *hit,
 }
 
 struct color render_shade_point(const struct scene *s, const struct render_settings *rs,
-				const struct ray *r, const struct render_point *h,
-				struct ray_counts *counts, const struct render_shadows *pre)
+				const struct ray *r, const struct render_point *h, int level,
+				struct ray_counts *counts, const struct render_shadows *pre,
+				const struct color *reflected)
 {
 	static const struct glass_stack outside = { 0, { NULL } };
 
-	/* The point again from its t: the same arithmetic, the same values,
-	 * and the single rays' path keeps its registers. */
-	return render_shade_at(s, rs, r, 1, counts, &outside, h->t, h->hit, pre);
+	return render_shade_from(s, rs, r, level, counts, &outside, h, pre, reflected);
 }

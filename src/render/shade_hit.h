@@ -11,6 +11,7 @@
 
 #include "whitted/render.h"
 #include "whitted/shape.h"
+#include "whitted/vec3.h"
 
 /* A ray's nearest hit, and what the shading needs of it. */
 struct render_point {
@@ -25,11 +26,19 @@ struct render_point {
 /* Shadow rays answered in packets, for the first RENDER_SHADOW_LIGHTS
  * lights (the others are traced one at a time): bit b of traced[l] when
  * the ray of point b to light l was traced, of blocked[l] when it was
- * blocked; `bit` the point being shaded. */
+ * blocked; `bit` the point being shaded.  For the first
+ * RENDER_SHADOW_KEPT lights, the direction to the light from each point,
+ * its distance and N.L, as the shading computes them (the same
+ * arithmetic), made once for the shadow rays and the shading both. */
 #define RENDER_SHADOW_LIGHTS 32
+#define RENDER_SHADOW_KEPT 8
+#define RENDER_SHADOW_POINTS 16	/* ACCEL_PACKET */
 struct render_shadows {
 	uint32_t traced[RENDER_SHADOW_LIGHTS], blocked[RENDER_SHADOW_LIGHTS];
 	int bit;
+	struct vec3 l[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
+	double dist[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
+	double nl[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
 };
 
 /* The point of ray r at t on hit (not NULL). */
@@ -40,10 +49,30 @@ void render_point_at(const struct ray *r, double t, const struct shape *hit,
  * *out. */
 void render_shadow_packets(const struct scene *s, const struct render_point *h, uint32_t mask,
 			   struct render_shadows *out);
-/* The colour render_trace gives ray r (level 1) whose nearest hit is h,
- * with the shadow answers of pre (NULL: each traced here). */
+/* The reflection of the ray that met point h, as the shading makes it. */
+static inline void render_bounce(const struct render_point *h, struct ray *out)
+{
+	out->origin = vec3_add_scaled(h->p, h->refl, h->eps);
+	out->dir = h->refl;
+}
+
+/* Whether the shading of point h at `level` traces a reflection that
+ * render_shade_point can take from its caller: a mirror that is not glass
+ * (glass's reflection depends on the glass stack and total internal
+ * reflection, and is traced by the shading itself). */
+static inline bool render_reflects(const struct render_settings *rs, const struct render_point *h,
+				   int level)
+{
+	return level < rs->recursion && h->hit->mat.kr > 0.0 && !(h->hit->mat.kt > 0.0);
+}
+
+/* The colour render_trace gives ray r at `level` (outside any glass)
+ * whose nearest hit is h, with the shadow answers of pre (NULL: each
+ * traced here) and, where render_reflects, the colour its reflection
+ * (render_bounce) sees, from the caller (NULL: traced here). */
 struct color render_shade_point(const struct scene *s, const struct render_settings *rs,
-				const struct ray *r, const struct render_point *h,
-				struct ray_counts *counts, const struct render_shadows *pre);
+				const struct ray *r, const struct render_point *h, int level,
+				struct ray_counts *counts, const struct render_shadows *pre,
+				const struct color *reflected);
 
 #endif

@@ -257,6 +257,11 @@ const char *scene_hierarchy_walk(const struct scene *s)
 	return accel_walk_name(s->accel);
 }
 
+const char *scene_hierarchy_packets(const struct scene *s)
+{
+	return accel_packets_name(s->accel);
+}
+
 const char *scene_walk_cap_unknown(void)
 {
 	return accel_walk_cap_unknown();

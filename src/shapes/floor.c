@@ -21,6 +21,7 @@
 #include "whitted/mesh.h"
 #include "whitted/pov.h"
 #include "shapes/shapes.h"
+#include "shapes/solve_packet.h"
 #include "whitted/shape.h"
 
 extern const struct shape_ops floor_ops;
@@ -53,6 +54,20 @@ static bool floor_intersect(const struct shape *s, const struct ray *r,
 		return false;
 	*t_max = t;
 	return true;
+}
+
+static uint32_t floor_intersect_packet(const struct shape *s, const struct ray_packet *p,
+				       uint32_t active, const double *t_min, double *t_max)
+{
+	return solve_packet_floor(p, active, 1, ((const struct floor *)s)->half, t_min, t_max);
+}
+
+static uint32_t floor_infinite_intersect_packet(const struct shape *s,
+						const struct ray_packet *p, uint32_t active,
+						const double *t_min, double *t_max)
+{
+	(void)s;
+	return solve_packet_floor(p, active, 0, 0.0, t_min, t_max);
 }
 
 static struct vec3 floor_normal(const struct shape *s, struct vec3 p)
@@ -332,6 +347,7 @@ static int floor_tessellate(const struct shape *s, const struct mesh_options *op
 const struct shape_ops floor_ops = {
 	.keyword = "floor",
 	.intersect = floor_intersect,
+	.intersect_packet = floor_intersect_packet,
 	.normal = floor_normal,
 	.export_pov = floor_export_pov,
 	.destroy = floor_destroy,
@@ -406,6 +422,7 @@ static int floor_infinite_tessellate(const struct shape *s, const struct mesh_op
 static const struct shape_ops floor_infinite_ops = {
 	.keyword = "floor",
 	.intersect = floor_infinite_intersect,
+	.intersect_packet = floor_infinite_intersect_packet,
 	.normal = floor_normal,
 	.export_pov = floor_infinite_export_pov,
 	.destroy = floor_destroy,

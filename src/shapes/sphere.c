@@ -9,6 +9,7 @@
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
 #include "shapes/solve.h"
+#include "shapes/solve_packet.h"
 
 struct sphere {
 	struct shape base;
@@ -26,6 +27,14 @@ static bool sphere_intersect(const struct shape *s, const struct ray *r,
 		return false;
 	*t_max = t;
 	return true;
+}
+
+static uint32_t sphere_intersect_packet(const struct shape *s, const struct ray_packet *p,
+				       uint32_t active, const double *t_min, double *t_max)
+{
+	const struct sphere *sp = (const struct sphere *)s;
+
+	return solve_packet_sphere(p, active, sp->centre, sp->radius_sq, t_min, t_max);
 }
 
 static struct vec3 sphere_normal(const struct shape *s, struct vec3 p)
@@ -119,6 +128,7 @@ const struct shape_ops sphere_ops = {
 	.keyword = "sphere",
 	.parse = sphere_parse,
 	.intersect = sphere_intersect,
+	.intersect_packet = sphere_intersect_packet,
 	.normal = sphere_normal,
 	.export_pov = sphere_export_pov,
 	.destroy = sphere_destroy,

@@ -8,6 +8,7 @@
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
 #include "shapes/solve.h"
+#include "shapes/solve_packet.h"
 
 /* The normal is not stored: computing it at a hit costs little next to
  * finding the hit, and leaving it out keeps a triangle at 144 bytes (a
@@ -35,6 +36,14 @@ static bool triangle_intersect(const struct shape *s, const struct ray *r,
 		return false;
 	*t_max = t;
 	return true;
+}
+
+static uint32_t triangle_intersect_packet(const struct shape *s, const struct ray_packet *p,
+				       uint32_t active, const double *t_min, double *t_max)
+{
+	const struct triangle *tr = (const struct triangle *)s;
+
+	return solve_packet_triangle(p, active, tr->v0, tr->e1, tr->e2, t_min, t_max);
 }
 
 static struct vec3 triangle_normal(const struct shape *s, struct vec3 p)
@@ -112,6 +121,7 @@ const struct shape_ops triangle_ops = {
 		     RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
 	.parse = triangle_parse,
 	.intersect = triangle_intersect,
+	.intersect_packet = triangle_intersect_packet,
 	.normal = triangle_normal,
 	.export_pov = triangle_export_pov,
 	.destroy = triangle_destroy,

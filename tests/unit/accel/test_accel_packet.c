@@ -75,9 +75,10 @@ static void check_packet_with(const struct accel *a, const struct accel *base,
 		if (one != hit[i] || memcmp(&ts, &t[i], sizeof(ts)) != 0 ||
 		    occ != (bool)(blocked >> i & 1) || one != by_base ||
 		    memcmp(&ts, &tb, sizeof(ts)) != 0) {
-			print_error("ray %d of %d (%s): alone %s at t = %.17g, occluded %d; in the "
+			print_error("ray %d of %d (%s, packets %d): alone %s at t = %.17g, occluded %d; in the "
 				    "packet %s at t = %.17g, occluded %d; base walk %s at %.17g\n",
-				    i, n, accel_walk_name(a), one ? one->ops->keyword : "nothing",
+				    i, n, accel_walk_name(a), (int)a->rays,
+				    one ? one->ops->keyword : "nothing",
 				    ts, occ, hit[i] ? hit[i]->ops->keyword : "nothing", t[i],
 				    (int)(blocked >> i & 1), by_base ? by_base->ops->keyword : "nothing",
 				    tb);
@@ -303,17 +304,29 @@ static void test_packet_unbounded_and_empty(void **state)
  * intersect ray by ray), and the answers are still the single walk's. */
 static int packet_calls;
 
-static uint32_t counting_intersect_packet(const struct shape *s, const struct ray *r,
+static uint32_t counting_intersect_packet(const struct shape *s, const struct ray_packet *p,
 					  uint32_t active, const double *t_min, double *t_max)
 {
 	uint32_t hit = 0;
 	int i;
 
 	packet_calls++;
-	for (i = 0; i < RT_PACKET_MAX; i++)
-		if ((active >> i & 1) && s->ops->intersect(s, r + i, t_min[i], t_max + i))
+	for (i = 0; i < RT_PACKET_MAX; i++) {
+		struct ray r = ray_packet_get(p, i);
+		if ((active >> i & 1) && s->ops->intersect(s, &r, t_min[i], t_max + i))
 			hit |= (uint32_t)1 << i;
+	}
 	return hit;
+}
+
+/* r[0..n) as a packet, the other lanes of the last run filled with r[0]
+ * (intersect_packet may read them). */
+static void to_packet(const struct ray *r, int n, struct ray_packet *p)
+{
+	int i;
+
+	for (i = 0; i < RT_PACKET_MAX; i++)
+		ray_packet_set(p, i, &r[i < n ? i : 0]);
 }
 
 static void test_packet_shape_packet_method(void **state)
@@ -331,7 +344,7 @@ static void test_packet_shape_packet_method(void **state)
 		assert_non_null(sh);
 		if (i == 0) {
 			ops = *sh->ops;
-			assert_null(ops.intersect_packet);
+			assert_non_null(ops.intersect_packet);
 			ops.intersect_packet = counting_intersect_packet;
 		}
 		sh->ops = &ops;
@@ -350,18 +363,20 @@ static void test_packet_shape_packet_method(void **state)
 	/* The default loops intersect: the same answers as the method. */
 	for (k = 0; k < 200; k++) {
 		struct ray r[ACCEL_PACKET];
+		struct ray_packet p;
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET], ta[ACCEL_PACKET], tb[ACCEL_PACKET];
 		struct shape *sh = s->shapes[k % s->n_shapes];
 		int n = random_packet(k % 5, 40, r, t_min, t_max);
 		uint32_t mask = (uint32_t)(support_rng() * 65536.0) & (((uint32_t)1 << n) - 1), ma, mb;
 		struct shape_ops plain = ops;
 
+		to_packet(r, n, &p);
 		plain.intersect_packet = NULL;
 		memcpy(ta, t_max, sizeof(ta));
 		memcpy(tb, t_max, sizeof(tb));
-		ma = shape_intersect_packet(sh, r, mask, t_min, ta);
+		ma = shape_intersect_packet(sh, &p, mask, t_min, ta);
 		sh->ops = &plain;
-		mb = shape_intersect_packet(sh, r, mask, t_min, tb);
+		mb = shape_intersect_packet(sh, &p, mask, t_min, tb);
 		sh->ops = &ops;
 		assert_int_equal(ma, mb);
 		assert_memory_equal(ta, tb, (size_t)n * sizeof(double));
@@ -376,14 +391,18 @@ static void test_packet_shape_packet_method(void **state)
 static void test_packet_default_method_full_mask(void **state)
 {
 	struct shape *sh = sphere_create(vec3_make(0, 0, 0), 5, &mat);
+	struct shape_ops plain;
 	struct ray r[RT_PACKET_MAX];
+	struct ray_packet p;
 	double t_min[RT_PACKET_MAX], t[RT_PACKET_MAX];
 	uint32_t hit;
 	int i, hits = 0;
 
 	(void)state;
 	assert_non_null(sh);
-	assert_null(sh->ops->intersect_packet);
+	plain = *sh->ops;
+	plain.intersect_packet = NULL;
+	sh->ops = &plain;
 	support_rng_seed(21);
 	for (i = 0; i < RT_PACKET_MAX; i++) {
 		r[i].origin = vec3_make(support_uniform(-8, 8), -20, support_uniform(-8, 8));
@@ -391,7 +410,8 @@ static void test_packet_default_method_full_mask(void **state)
 		t_min[i] = 1e-6;
 		t[i] = INFINITY;
 	}
-	hit = shape_intersect_packet(sh, r, ~(uint32_t)0, t_min, t);
+	to_packet(r, RT_PACKET_MAX, &p);
+	hit = shape_intersect_packet(sh, &p, ~(uint32_t)0, t_min, t);
 	for (i = 0; i < RT_PACKET_MAX; i++) {
 		double ts = INFINITY;
 		bool one = shape_intersect(sh, &r[i], t_min[i], &ts);
@@ -407,11 +427,11 @@ static void test_packet_default_method_full_mask(void **state)
  * bit set) must not reach them: the host keeps only the active bits, so
  * no ray outside the mask is hit and nothing is written past the
  * packet's arrays (the sanitizer build would see it). */
-static uint32_t stray_intersect_packet(const struct shape *s, const struct ray *r,
+static uint32_t stray_intersect_packet(const struct shape *s, const struct ray_packet *p,
 				       uint32_t active, const double *t_min, double *t_max)
 {
 	(void)s;
-	(void)r;
+	(void)p;
 	(void)active;
 	(void)t_min;
 	(void)t_max;
@@ -449,7 +469,12 @@ static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
 		t_min[i] = 1e-6;
 		t_max[i] = INFINITY;
 	}
-	assert_int_equal(shape_intersect_packet(bad, r, 0x5, t_min, t_max), 0x5);
+	{
+		struct ray_packet p;
+
+		to_packet(r, ACCEL_PACKET, &p);
+		assert_int_equal(shape_intersect_packet(bad, &p, 0x5, t_min, t_max), 0x5);
+	}
 	/* One ray at a time through the whole scene: the stray bits would
 	 * name rays 1 to 31 of a one-ray packet. */
 	for (k = 0; k < 300; k++) {

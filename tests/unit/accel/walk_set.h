@@ -1,6 +1,9 @@
 /* A scene's hierarchy built once for each walk this processor runs (the
- * base walks over four children; AVX2 and AVX-512 over eight), for the
- * tests that hold the walks to one another's answers. */
+ * base walks over four children; AVX2 and AVX-512 over eight), and the
+ * four-child one once more for each set of instructions its packets can
+ * go a ray a lane in (accel_packet_rays.h: SSE2 or plain C, AVX2,
+ * AVX-512), for the tests that hold the walks to one another's answers.
+ * The first is the base walk with the base packets. */
 #ifndef RT_TEST_WALK_SET_H
 #define RT_TEST_WALK_SET_H
 
@@ -9,7 +12,7 @@
 #include "support.h"
 
 struct walk_set {
-	struct accel *a[3];
+	struct accel *a[5];
 	int n;
 };
 
@@ -22,12 +25,20 @@ static inline void walk_set_build(struct walk_set *w, const struct scene *s)
 
 	w->n = 0;
 	for (k = 0; k < sizeof(walks) / sizeof(walks[0]); k++) {
+		size_t j;
+
 		if (!accel_walk_usable(walks[k]))
 			continue;
-		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[k],
-						  &w->a[w->n], &d), 0);
-		assert_int_equal(w->a[w->n]->walk, walks[k]);
-		w->n++;
+		for (j = 0; j < (walks[k] == ACCEL_WALK_BASE ? 3u : 1u); j++) {
+			if (!accel_walk_usable(walks[j]))
+				continue;
+			assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[k],
+							  &w->a[w->n], &d), 0);
+			assert_int_equal(w->a[w->n]->walk, walks[k]);
+			if (walks[k] == ACCEL_WALK_BASE)
+				w->a[w->n]->rays = walks[j];
+			w->n++;
+		}
 	}
 }
 

@@ -27,9 +27,10 @@ struct abi_pin {
 #define PIN_AT(type, member, n) { "offsetof(" #type ", " #member ")", offsetof(type, member), n }
 #define PIN_VALUE(expr, n) { #expr, (size_t)(expr), n }
 
-/* ABI 3 on LP64 (ABI 2 was this without struct shape_ops'
- * intersect_packet at its end). */
-static const struct abi_pin abi_3[] = {
+/* ABI 4 on LP64 (ABI 3 was this with intersect_packet taking an array
+ * of struct ray, and without struct ray_packet and RT_PACKET_RUN; ABI 2
+ * without struct shape_ops' intersect_packet at its end). */
+static const struct abi_pin abi_4[] = {
 	PIN_SIZE(struct vec3, 24),
 	PIN_AT(struct vec3, x, 0), PIN_AT(struct vec3, y, 8), PIN_AT(struct vec3, z, 16),
 	PIN_SIZE(struct color, 24),
@@ -55,6 +56,11 @@ static const struct abi_pin abi_3[] = {
 	PIN_AT(struct shape_ops, specular_color_at, 88), PIN_AT(struct shape_ops, closed, 96),
 	PIN_AT(struct shape_ops, intersect_packet, 104),
 	PIN_VALUE(RT_PACKET_MAX, 32),
+	PIN_VALUE(RT_PACKET_RUN, 8),
+	PIN_SIZE(struct ray_packet, 6 * 32 * 8),
+	PIN_AT(struct ray_packet, ox, 0), PIN_AT(struct ray_packet, oy, 256),
+	PIN_AT(struct ray_packet, oz, 512), PIN_AT(struct ray_packet, dx, 768),
+	PIN_AT(struct ray_packet, dy, 1024), PIN_AT(struct ray_packet, dz, 1280),
 	PIN_SIZE(struct pov_options, 24),
 	PIN_AT(struct pov_options, finish, 0), PIN_AT(struct pov_options, shadow_twin, 4),
 	PIN_AT(struct pov_options, floor_texture, 8),
@@ -106,7 +112,7 @@ static const struct {
 	const struct abi_pin *pins;
 	size_t n;
 } tables[] = {
-	{ 3, abi_3, sizeof(abi_3) / sizeof(abi_3[0]) },
+	{ 4, abi_4, sizeof(abi_4) / sizeof(abi_4[0]) },
 };
 
 static void test_abi_layout_is_pinned(void **state)

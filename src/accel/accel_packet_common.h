@@ -1,0 +1,109 @@
+/* What the packet walks share (accel_packet.h, accel_packet_rays.c):
+ * the packet as the shapes take it, and the leaves' tests for a packet's
+ * rays against their best so far. */
+#ifndef RT_ACCEL_PACKET_COMMON
+#define RT_ACCEL_PACKET_COMMON
+
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "accel/accel_tree.h"
+#include "accel/accel_walk_common.h"
+
+/* A packet's rays as the shapes take them, and their t_min: every lane
+ * filled (those past the n rays with ray 0), as intersect_packet may read
+ * whole runs. */
+struct packet_shape_rays {
+	struct ray_packet p;
+	double t_min[ACCEL_PACKET];
+};
+
+static inline void packet_shape_rays_load(struct packet_shape_rays *s, const struct ray *r, int n,
+					  const double *t_min)
+{
+	int i;
+
+	for (i = 0; i < ACCEL_PACKET; i++) {
+		int j = i < n ? i : 0;
+		ray_packet_set(&s->p, i, r + j);
+		s->t_min[i] = t_min[j];
+	}
+}
+
+/* The bound a shape is tested to against each ray's best so far: the best
+ * t, or one step past it once there is a hit (the tie rule). */
+static inline void packet_bounds(const struct walk_best *b, uint32_t mask, double *t)
+{
+	int i;
+
+	for (i = 0; i < ACCEL_PACKET; i++)
+		t[i] = b[i].t;
+	for (; mask; mask &= mask - 1) {
+		i = __builtin_ctz(mask);
+		if (b[i].hit)
+			t[i] = next_up(b[i].t);
+	}
+}
+
+/* Tests shape sh, of key `key`, for the rays of `mask` against their
+ * best so far. */
+static inline void packet_best_test(const struct shape *sh, uint32_t key,
+				    const struct packet_shape_rays *s, uint32_t mask,
+				    struct walk_best *b)
+{
+	double t[ACCEL_PACKET];
+	uint32_t m;
+
+	packet_bounds(b, mask, t);
+	for (m = shape_intersect_packet(sh, &s->p, mask, s->t_min, t); m; m &= m - 1) {
+		int i = __builtin_ctz(m);
+		if (t[i] < b[i].t || key < b[i].key) {
+			b[i].t = t[i];
+			b[i].hit = sh;
+			b[i].key = key;
+		}
+	}
+}
+
+static inline void packet_leaf_nearest(const struct accel *a, uintptr_t slot,
+				       const struct packet_shape_rays *s, uint32_t mask,
+				       struct walk_best *b)
+{
+	size_t pos = accel_slot_index(slot);
+	unsigned count = accel_slot_tag(slot), k;
+
+	for (k = 0; k < count; k++)
+		packet_best_test(a->bounded[pos + k], a->bounded_key[pos + k], s, mask, b);
+}
+
+/* The rays of `mask` that a leaf's shapes block in (t_min, t_max);
+ * t_max has every lane. */
+static inline uint32_t packet_leaf_any(const struct accel *a, uintptr_t slot,
+				       const struct packet_shape_rays *s, uint32_t mask,
+				       const double *t_max)
+{
+	size_t pos = accel_slot_index(slot);
+	unsigned count = accel_slot_tag(slot), k;
+	uint32_t blocked = 0, m;
+	double t[ACCEL_PACKET];
+
+	for (k = 0; k < count && mask; k++) {
+		/* A copy for the shape to shrink: a blocker's distance does
+		 * not matter here. */
+		memcpy(t, t_max, sizeof(t));
+		m = shape_intersect_packet(a->bounded[pos + k], &s->p, mask, s->t_min, t);
+		blocked |= m;
+		mask &= ~m;
+	}
+	return blocked;
+}
+
+static inline uint32_t packet_all(int n)
+{
+	return n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1;
+}
+
+#endif

@@ -1,0 +1,36 @@
+/* The ray/sphere, ray/triangle and floor tests over a packet's rays
+ * (whitted/shape.h's intersect_packet contract: runs of RT_PACKET_RUN, the
+ * mask of the rays hit, t_max shrunk for them), each ray's t to the bit
+ * the single-ray test's (solve.c, floor.c), in the widest vector
+ * instructions the processor has (base/simd.h). */
+#ifndef RT_SHAPES_SOLVE_PACKET_H
+#define RT_SHAPES_SOLVE_PACKET_H
+
+#include <stdint.h>
+
+#include "whitted/shape.h"
+
+uint32_t solve_packet_sphere(const struct ray_packet *p, uint32_t active, struct vec3 centre,
+			     double radius_sq, const double *t_min, double *t_max);
+uint32_t solve_packet_triangle(const struct ray_packet *p, uint32_t active, struct vec3 v0,
+			       struct vec3 e1, struct vec3 e2, const double *t_min,
+			       double *t_max);
+/* The plane z = 0; where bounded, only its square |x|, |y| < half
+ * (half-open, as floor.c's). */
+uint32_t solve_packet_floor(const struct ray_packet *p, uint32_t active, int bounded,
+			    double half, const double *t_min, double *t_max);
+
+/* One set of instructions' solvers (solve_packet_lanes.h); all NULL in a
+ * file compiled without them. */
+struct solve_packet_set {
+	uint32_t (*sphere)(const struct ray_packet *p, uint32_t active, struct vec3 centre,
+			   double radius_sq, const double *t_min, double *t_max);
+	uint32_t (*triangle)(const struct ray_packet *p, uint32_t active, struct vec3 v0,
+			     struct vec3 e1, struct vec3 e2, const double *t_min, double *t_max);
+	uint32_t (*floor)(const struct ray_packet *p, uint32_t active, int bounded, double half,
+			  const double *t_min, double *t_max);
+};
+
+extern const struct solve_packet_set solve_packet_base, solve_packet_avx2, solve_packet_avx512;
+
+#endif
