@@ -206,6 +206,11 @@ bool accel_packets_pay(const struct accel *a)
 	return a->walk != ACCEL_WALK_BASE || a->rays != ACCEL_WALK_BASE;
 }
 
+bool accel_packets_scatter_pay(const struct accel *a)
+{
+	return a->walk == ACCEL_WALK_BASE && a->rays != ACCEL_WALK_BASE;
+}
+
 bool accel_packets_wanted(const struct accel *a)
 {
 	const char *p = getenv("WHITTED_PACKETS");

@@ -23,8 +23,9 @@ bool render_packets_wanted(const struct accel *a)
 	return accel_packets_wanted(a);
 }
 
-/* Packets go down this many levels of reflection; deeper ones are traced
- * ray by ray by the shading (a level's frame is about 11 KiB of stack). */
+/* Packets go down this many levels of reflection where a packet's rays
+ * need not agree (accel_packets_scatter_pay); deeper ones are traced ray
+ * by ray by the shading (a level's frame is about 11 KiB of stack). */
 #define PACKET_DEPTH 8
 
 /* The colours of the rays r[0..n) (n <= ACCEL_PACKET) at `level`, as
@@ -35,6 +36,7 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 			 struct ray_counts *counts, struct color *out)
 {
 	const struct scene *sc = job->scene;
+	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
 	const struct shape *hit[ACCEL_PACKET];
 	struct render_point h[ACCEL_PACKET];
@@ -55,7 +57,7 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 			continue;
 		render_point_at(&r[i], t[i], hit[i], &h[i]);
 		hits |= (uint32_t)1 << i;
-		if (level < PACKET_DEPTH && render_reflects(&job->settings, &h[i], level)) {
+		if (level < depth && render_reflects(&job->settings, &h[i], level)) {
 			render_bounce(&h[i], &bounce[nb]);
 			slot[i] = nb++;
 		}

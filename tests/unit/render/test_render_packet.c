@@ -141,8 +141,9 @@ static void test_render_packet_spot_and_falloff_same_image(void **state)
 	check_same(true);
 }
 
-/* Forced on a small tree (the course scene alone, where the default is
- * one ray at a time) the packets give the same image too. */
+/* On a small tree (the course scene alone: packets a ray a lane by
+ * default where the processor has AVX2, one ray at a time with SSE2
+ * alone) the packets forced on give the same image too. */
 static void test_render_packet_forced_on_a_small_tree(void **state)
 {
 	struct scene *s = support_parse(course_scene);
@@ -160,12 +161,66 @@ static void test_render_packet_forced_on_a_small_tree(void **state)
 	scene_destroy(s);
 }
 
+/* A small tree's packets, a ray a lane in each set of instructions this
+ * processor runs, with mirrors' reflections in packets down to the depth
+ * limit and beyond (recursion 12), glass (whose reflections the shading
+ * traces itself) and mirrors of every kind: the image and the ray counts
+ * of one ray at a time. */
+static void test_render_packet_small_tree_reflections(void **state)
+{
+	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.6, 20, 0.0, 1.0 };
+	static const struct material glass = { { 0.9, 1, 0.9 }, 0.1, 0.3, 0.4, 0.2, 30, 0.7, 1.5 };
+	static const enum accel_walk lanes[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2, ACCEL_WALK_AVX512 };
+	struct scene *s = support_parse(course_scene);
+	struct image one, other;
+	struct ray_counts n1, n;
+	struct diag d;
+	size_t k;
+	int i, tested = 0;
+
+	(void)state;
+	rng_state = 0x9876543u;
+	for (i = 0; i < 40; i++) {
+		struct vec3 c = vec3_make(uniform(-50, 50), uniform(-30, 50), uniform(2, 50));
+		const struct material *m = i % 7 == 0 ? &glass : &mirror;
+		struct shape *sh = i % 2 ? sphere_create(c, uniform(2, 8), m)
+				   : triangle_create(c, vec3_add(c, vec3_make(uniform(-9, 9), 0, uniform(-9, 9))),
+						     vec3_add(c, vec3_make(uniform(-9, 9), uniform(-9, 9), 0)), m);
+		assert_non_null(sh);
+		assert_int_equal(scene_add_shape(s, sh, &d), 0);
+	}
+	assert_int_equal(scene_set_recursion(s, 12, &d), 0);
+	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	assert_int_equal(s->accel->walk, ACCEL_WALK_BASE);
+	render_with(s, "0", 1, 0, 0, 90, 90, &one, &n1);
+	assert_true(n1.reflection > n1.primary / 2 && n1.refraction > 0);
+	for (k = 0; k < sizeof(lanes) / sizeof(lanes[0]); k++) {
+		if (!accel_walk_usable(lanes[k]))
+			continue;
+		s->accel->rays = lanes[k];
+		assert_int_equal(accel_packets_scatter_pay(s->accel), lanes[k] != ACCEL_WALK_BASE);
+		render_with(s, "1", k == 1 ? 3 : 1, 0, 0, 90, 90, &other, &n);
+		assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
+		assert_int_equal(n.primary, n1.primary);
+		assert_int_equal(n.shadow, n1.shadow);
+		assert_int_equal(n.reflection, n1.reflection);
+		assert_int_equal(n.refraction, n1.refraction);
+		image_free(&other);
+		tested++;
+	}
+	assert_true(tested >= 1);
+	image_free(&one);
+	scene_destroy(s);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_render_packet_classic_lights_same_image),
 		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
 		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
+		cmocka_unit_test(test_render_packet_small_tree_reflections),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }
