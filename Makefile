@@ -87,7 +87,7 @@ UNIT_SHARED_DIR ?= $(abspath ../shared)
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
 	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
-	install-test newshape plugintest
+	install-test newshape plugintest embreecheck
 
 .PHONY: all render check deps check-deps install clean bench fuzz fuzz-images plugins $(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
@@ -236,6 +236,8 @@ imgcmptest: all
 	@tests/tools/imgcmp-test.sh
 povcheck: all plugins
 	@tests/povcheck.sh
+embreecheck: all
+	@bench/embreecheck.sh
 refcheck: all
 	@python3 tests/reference/random_check.py $(BUILD)/whitted 24 2026 80
 mistakecheck: all

@@ -19,6 +19,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "accel/accel.h"
@@ -289,6 +290,27 @@ bool accel_packets_pay(const struct accel *a)
 {
 	(void)a;
 	return false;
+}
+
+/* One ray at a time, unless WHITTED_PACKETS=1 asks for the packets (each
+ * ray of them still one Embree query). */
+bool accel_packets_wanted(const struct accel *a)
+{
+	const char *p = getenv("WHITTED_PACKETS");
+
+	(void)a;
+	return p && strcmp(p, "1") == 0;
+}
+
+bool accel_packets_scatter_pay(const struct accel *a)
+{
+	(void)a;
+	return false;
+}
+
+const char *accel_packets_name(const struct accel *a)
+{
+	return accel_packets_wanted(a) ? "packets, a ray at a time" : "no packets";
 }
 
 size_t accel_node_count(const struct accel *a)
