@@ -106,8 +106,9 @@ $(BUILD)/san/%.o: %.c
 # src/base/simd.c); no contraction into FMA, which would change the
 # rounding.
 ifneq ($(filter x86_64% amd64% i%86%,$(shell $(CC) -dumpmachine)),)
-%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o: ALL_CFLAGS += -mavx2 -ffp-contract=off
-%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o: \
+%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o %/render/light_dirs_avx2.o: \
+	ALL_CFLAGS += -mavx2 -ffp-contract=off
+%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o %/render/light_dirs_avx512.o: \
 	ALL_CFLAGS += -mavx512f -ffp-contract=off
 endif
 

@@ -13,6 +13,7 @@
 #include "accel/accel.h"
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
+#include "base/simd.h"
 
 #define ACCEL_NODE struct bvh4_node
 #define ACCEL_W 4
@@ -274,17 +275,11 @@ const char *accel_walk_cap_unknown(void)
 	return isa;
 }
 
-/* Whether the processor runs the instructions: asked here, in a file
- * compiled for the baseline, not in the files compiled for them. */
+/* Whether the processor runs the instructions (base/simd.c asks it, in a
+ * file compiled for the baseline). */
 static bool cpu_has(enum accel_walk w)
 {
-#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__)
-	return w == ACCEL_WALK_AVX512 ? __builtin_cpu_supports("avx512f")
-				       : __builtin_cpu_supports("avx2");
-#else
-	(void)w;
-	return false;
-#endif
+	return rt_simd_cpu_has(w == ACCEL_WALK_AVX512 ? RT_SIMD_AVX512 : RT_SIMD_AVX2) != 0;
 }
 
 bool accel_walk_usable(enum accel_walk w)

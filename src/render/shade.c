@@ -7,6 +7,7 @@
 
 #include "accel/accel.h"
 #include "render/glass_stack.h"
+#include "render/light_dirs.h"
 #include "render/shade_hit.h"
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
@@ -92,24 +93,39 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 {
 	size_t nl = s->n_lights < RENDER_SHADOW_LIGHTS ? s->n_lights : RENDER_SHADOW_LIGHTS, j;
 
+	struct light_dirs_points pts;
+	int i;
+
+	if (!mask)
+		return;
+	/* The points a lane each (the others a copy of the first). */
+	for (i = 0; i < LIGHT_DIRS_LANES; i++) {
+		const struct render_point *q = &h[mask >> i & 1 ? i : __builtin_ctz(mask)];
+		pts.px[i] = q->p.x;
+		pts.py[i] = q->p.y;
+		pts.pz[i] = q->p.z;
+		pts.nx[i] = q->n.x;
+		pts.ny[i] = q->n.y;
+		pts.nz[i] = q->n.z;
+	}
 	for (j = 0; j < nl; j++) {
 		const struct light *lt = &s->lights[j];
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
-		int bit[ACCEL_PACKET], k = 0, i;
+		struct light_dirs dirs;
+		int bit[ACCEL_PACKET], k = 0;
 		uint32_t m, blocked;
 
 		out->traced[j] = out->blocked[j] = 0;
 		/* The ray render_direct (or render_direct_full) makes, by the
 		 * same arithmetic, and only where it makes one. */
+		light_dirs(&pts, lt->pos, &dirs);
 		for (m = mask; m; m &= m - 1) {
 			int b = __builtin_ctz(m);
 			const struct render_point *q = &h[b];
-			struct vec3 to_light = vec3_sub(lt->pos, q->p), l;
-			double dist = vec3_length(to_light), nl;
+			struct vec3 l = vec3_make(dirs.lx[b], dirs.ly[b], dirs.lz[b]);
+			double dist = dirs.dist[b], nl = dirs.nl[b];
 
-			l = vec3_scale(to_light, 1.0 / dist);
-			nl = vec3_dot(q->n, l);
 			if (j < RENDER_SHADOW_KEPT) {
 				out->l[j][b] = l;
 				out->dist[j][b] = dist;

@@ -1,0 +1,73 @@
+/* The directions to a light a point a lane (light_dirs.h), in every set of
+ * instructions this processor runs, against the shading's own arithmetic
+ * (vec3_sub, vec3_length, vec3_scale by 1 / dist, vec3_dot), to the bit:
+ * random points and lights, a light exactly at a point (a distance of 0,
+ * an infinite direction), huge and tiny distances. */
+#include <math.h>
+#include <string.h>
+
+#include "base/simd.h"
+#include "render/light_dirs.h"
+#include "support.h"
+
+static void check_set(void (*set)(const struct light_dirs_points *, struct vec3,
+				  struct light_dirs *),
+		      const char *name)
+{
+	int k, i;
+
+	support_rng_seed(61);
+	for (k = 0; k < 4000; k++) {
+		struct light_dirs_points p;
+		struct light_dirs out;
+		struct vec3 pos = support_random_point(k % 5 == 0 ? 1e6 : 100);
+		struct vec3 pt[LIGHT_DIRS_LANES], n[LIGHT_DIRS_LANES];
+
+		for (i = 0; i < LIGHT_DIRS_LANES; i++) {
+			double u = support_rng();
+			pt[i] = u < 0.1 ? pos : u < 0.2 ? vec3_add(pos, support_random_point(1e-9))
+						 : support_random_point(100);
+			n[i] = support_random_direction();
+			p.px[i] = pt[i].x, p.py[i] = pt[i].y, p.pz[i] = pt[i].z;
+			p.nx[i] = n[i].x, p.ny[i] = n[i].y, p.nz[i] = n[i].z;
+		}
+		set(&p, pos, &out);
+		for (i = 0; i < LIGHT_DIRS_LANES; i++) {
+			struct vec3 to = vec3_sub(pos, pt[i]), l;
+			double dist = vec3_length(to), nl;
+
+			l = vec3_scale(to, 1.0 / dist);
+			nl = vec3_dot(n[i], l);
+			if (memcmp(&dist, &out.dist[i], sizeof(dist)) != 0 ||
+			    memcmp(&l.x, &out.lx[i], sizeof(double)) != 0 ||
+			    memcmp(&l.y, &out.ly[i], sizeof(double)) != 0 ||
+			    memcmp(&l.z, &out.lz[i], sizeof(double)) != 0 ||
+			    memcmp(&nl, &out.nl[i], sizeof(nl)) != 0) {
+				print_error("%s, lane %d: dist %.17g / %.17g, l (%.17g %.17g %.17g) / "
+					    "(%.17g %.17g %.17g), nl %.17g / %.17g\n",
+					    name, i, dist, out.dist[i], l.x, l.y, l.z, out.lx[i], out.ly[i],
+					    out.lz[i], nl, out.nl[i]);
+				fail();
+			}
+		}
+	}
+}
+
+static void test_light_dirs_every_set(void **state)
+{
+	(void)state;
+	check_set(light_dirs_base, "base");
+	if (light_dirs_avx2 && rt_simd_cpu_has(RT_SIMD_AVX2))
+		check_set(light_dirs_avx2, "avx2");
+	if (light_dirs_avx512 && rt_simd_cpu_has(RT_SIMD_AVX512))
+		check_set(light_dirs_avx512, "avx512");
+	check_set(light_dirs, "chosen");
+}
+
+int main(int argc, char **argv)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_light_dirs_every_set),
+	};
+	return SUPPORT_RUN(tests, argc, argv);
+}
