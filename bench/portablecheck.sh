@@ -3,7 +3,8 @@
 # growth and binning of the build) has a plain C twin for machines without
 # SSE2, chosen by ACCEL_PORTABLE, and a big scene's walks have AVX-512 or
 # AVX2 box tests over eight-child nodes where the processor has them
-# (WHITTED_ISA=avx2 and WHITTED_ISA=sse2 cap them).  All must give the same
+# (WHITTED_ISA=avx2 and WHITTED_ISA=sse2 cap them), and packets of rays
+# in each (WHITTED_PACKETS=1 forces them, =0 turns them off).  All must give the same
 # images byte for byte:
 # renders every scene in scenes/ and tests/scenes/ and generated ones with
 # each build and compares the files.  Every scene must render with both
@@ -51,6 +52,14 @@ for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
 				env WHITTED_ISA=$isa "$W" -q --stats -j $j -s 96 -o "$T/$isa.ppm" "$scene"
 			sed -n 's/.*, \([a-z0-9]*\) walk, .*/\1/p' "$T/err" >>"$T/walks"
 		done
+		# Packets forced where they would not run by themselves (the
+		# portable build, the SSE2 walk), and single rays where they would.
+		same_as_default "the portable build's packets" "$T/portable-packets.ppm" \
+			env WHITTED_PACKETS=1 "$P" -q -j $j -s 96 -o "$T/portable-packets.ppm" "$scene"
+		same_as_default "packets under WHITTED_ISA=sse2" "$T/sse2-packets.ppm" \
+			env WHITTED_ISA=sse2 WHITTED_PACKETS=1 "$W" -q -j $j -s 96 -o "$T/sse2-packets.ppm" "$scene"
+		same_as_default "single rays (WHITTED_PACKETS=0)" "$T/single.ppm" \
+			env WHITTED_PACKETS=0 "$W" -q -j $j -s 96 -o "$T/single.ppm" "$scene"
 		"$W" -q --stats -j $j -s 8 -o "$T/w.ppm" "$scene" 2>&1 |
 			sed -n 's/.*, \([a-z0-9]*\) walk, .*/\1/p' >>"$T/walks"
 	done

@@ -206,3 +206,4 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 	}
 	return all & ~open;
 }
+#undef LANES

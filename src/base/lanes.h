@@ -163,7 +163,7 @@ static inline lm lv_ne(lv a, lv b) { return a != b; }
 static inline lv lv_sel(lm m, lv a, lv b) { return m ? a : b; }
 static inline lm lm_and(lm a, lm b) { return a & b; }
 static inline lm lm_or(lm a, lm b) { return a | b; }
-static inline lm lm_andnot(lm a, lm b) { return !a & b; }
+static inline lm lm_andnot(lm a, lm b) { return !a && b; }
 static inline unsigned lm_bits(lm m) { return (unsigned)m; }
 static inline lm lm_from_bits(unsigned b) { return (lm)(b & 1); }
 static inline lv lv_bits_op(lv a, lv b, int op)

@@ -4,6 +4,7 @@
 #include <pthread.h>
 #include <string.h>
 
+#include "base/thread.h"
 #include "grade/grade_impl.h"
 #include "render/shade_rules.h"
 
@@ -177,7 +178,7 @@ int grade_render_causes(const struct grade_job *job, const int *ids, struct imag
 		return 0;
 	nthreads = nthreads < 1 ? 1 : nthreads > GRADE_MAX_THREADS ? GRADE_MAX_THREADS : nthreads;
 	for (i = 1; i < nthreads; i++) {
-		if (pthread_create(&threads[i], NULL, grade_worker, &w) != 0)
+		if (rt_thread_start(&threads[i], grade_worker, &w) != 0)
 			break;
 		started++;
 	}

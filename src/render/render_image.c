@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/alloc.h"
+#include "base/thread.h"
 #include "render/camera_span.h"
 #include "render/render_packet.h"
 #include "render/samples.h"
@@ -265,7 +266,7 @@ int render_image(const struct render_job *job, struct image *img,
 	}
 	/* The calling thread is worker 0; the others are started here. */
 	for (i = 1; i < threads; i++) {
-		if (pthread_create(&workers[i].thread, NULL, render_worker_main, &workers[i]) != 0)
+		if (rt_thread_start(&workers[i].thread, render_worker_main, &workers[i]) != 0)
 			break;
 		started++;
 	}

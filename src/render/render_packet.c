@@ -3,8 +3,11 @@
  * nodes, which a packet then loads and tests once for all
  * (accel_intersect_packet, accel_occluded_packet: four rays to an AVX2
  * operation), and each pixel is shaded from its ray's hit with those
- * shadow answers as render_trace would shade it (shade_hit.h).  The
- * reflections and their shadows stay single rays: they part at once. */
+ * shadow answers as render_trace would shade it (shade_hit.h).  Mirrors'
+ * reflections go on as packets of their own, down to PACKET_DEPTH, where
+ * the packets' walks take a ray a lane (accel_packets_scatter_pay: the
+ * reflected rays part, and a ray a lane does not mind); elsewhere they
+ * are single rays. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,7 +28,8 @@ bool render_packets_wanted(const struct accel *a)
 
 /* Packets go down this many levels of reflection where a packet's rays
  * need not agree (accel_packets_scatter_pay); deeper ones are traced ray
- * by ray by the shading (a level's frame is about 11 KiB of stack). */
+ * by ray by the shading (a level's frame is about 10 KB of stack, which
+ * the workers have: base/thread.h). */
 #define PACKET_DEPTH 8
 
 /* The colours of the rays r[0..n) (n <= ACCEL_PACKET) at `level`, as

@@ -13,6 +13,13 @@
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
 
+/* A packet's shadow rays are one accel packet, their directions one
+ * light_dirs call and the shape tests whole runs of RT_PACKET_RUN lanes. */
+typedef char packet_widths_agree[ACCEL_PACKET == RENDER_SHADOW_POINTS &&
+						 ACCEL_PACKET == LIGHT_DIRS_LANES &&
+						 ACCEL_PACKET % RT_PACKET_RUN == 0 &&
+						 ACCEL_PACKET <= RT_PACKET_MAX ? 1 : -1];
+
 /* kd (N.L) + ks max(R.L, 0)^shininess: a light's factor on Lc C. */
 static inline double render_phong(const struct material *m, struct vec3 refl, struct vec3 l,
 				  double nl)

@@ -79,7 +79,7 @@ for tool in whitted scene2pov whitted-view; do
 		"${run[@]}" --plugin bad_abi.so torus.txt
 	expect_fail "$tool older abi" "plugin old_abi.so: built for plugin ABI version 1, but this whitted supports version 4 only" \
 		"${run[@]}" --plugin old_abi.so torus.txt
-	expect_fail "$tool abi 2" "plugin old2_abi.so: built for plugin ABI version 3, but this whitted supports version 4 only" \
+	expect_fail "$tool abi 3" "plugin old2_abi.so: built for plugin ABI version 3, but this whitted supports version 4 only" \
 		"${run[@]}" --plugin old2_abi.so torus.txt
 	expect_fail "$tool clash built-in" "plugin clash_sphere.so: shape keyword 'sphere' is already defined by whitted (built in)" \
 		"${run[@]}" --plugin clash_sphere.so torus.txt

@@ -311,9 +311,14 @@ static uint32_t counting_intersect_packet(const struct shape *s, const struct ra
 	int i;
 
 	packet_calls++;
+	/* Only the active lanes: the others of a run may hold anything. */
 	for (i = 0; i < RT_PACKET_MAX; i++) {
-		struct ray r = ray_packet_get(p, i);
-		if ((active >> i & 1) && s->ops->intersect(s, &r, t_min[i], t_max + i))
+		struct ray r;
+
+		if (!(active >> i & 1))
+			continue;
+		r = ray_packet_get(p, i);
+		if (s->ops->intersect(s, &r, t_min[i], t_max + i))
 			hit |= (uint32_t)1 << i;
 	}
 	return hit;

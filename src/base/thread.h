@@ -1,0 +1,18 @@
+/* Starting a worker thread with a stack of a known size.  The default is
+ * the process's stack limit on glibc but 2 MiB when that limit is
+ * unlimited, and 128 KiB on musl; a packet's recursive shading and the
+ * hierarchy walks need some hundred kilobytes at the deepest recursion,
+ * so the renderer's and the grader's workers ask for RT_THREAD_STACK. */
+#ifndef RT_THREAD_H
+#define RT_THREAD_H
+
+#include <pthread.h>
+
+#define RT_THREAD_STACK ((size_t)8 << 20)
+
+/* pthread_create(t, attributes with RT_THREAD_STACK, fn, arg); falls back
+ * to the default attributes if the size cannot be set.  Returns 0 or the
+ * error pthread_create returned. */
+int rt_thread_start(pthread_t *t, void *(*fn)(void *), void *arg);
+
+#endif
