@@ -112,9 +112,11 @@ $(BUILD)/san/%.o: %.c
 # the x87 unit: vector code beside it would round differently, so there
 # every path is the plain C one.
 ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
-%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o %/render/light_dirs_avx2.o: \
+%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o %/render/light_dirs_avx2.o \
+	%/render/shade_lanes_avx2.o: \
 	ALL_CFLAGS += -mavx2
-%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o %/render/light_dirs_avx512.o: \
+%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o %/render/light_dirs_avx512.o \
+	%/render/shade_lanes_avx512.o: \
 	ALL_CFLAGS += -mavx512f
 endif
 

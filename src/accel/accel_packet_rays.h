@@ -53,40 +53,53 @@ static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, i
 	}
 }
 
-/* The lanes of `mask` entering child c of node nd within (t_min,
- * t_max[lane]), and the entries of the groups of lanes tested. */
-static inline uint32_t RAYS_WALK(child_lanes)(const struct bvh4_node *nd, int c,
-					      const struct packet_rays *v, uint32_t mask,
-					      const double *t_max, double *entry)
+/* The lanes of `mask` entering each child of node nd within (t_min,
+ * t_max[lane]) into child[c] (none for an empty slot), and, where entry
+ * is not NULL, the entries of the groups of lanes tested.  The four
+ * children go together, a group of lanes at a time: their tests are
+ * independent, so they overlap, where one child after another waited on
+ * each test's chain of maxima and minima. */
+static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struct packet_rays *v,
+					 uint32_t mask, const double *t_max, double (*entry)[LANES],
+					 uint32_t child[4])
 {
 	const lv zero = lv_set1(0.0);
-	lv b0[3], b1[3];
-	uint32_t in = 0;
-	int j, k;
+	int j, k, c;
 
-	for (k = 0; k < 3; k++) {
-		b0[k] = lv_set1(nd->lo[k][c]);
-		b1[k] = lv_set1(nd->hi[k][c]);
-	}
+	for (c = 0; c < 4; c++)
+		child[c] = 0;
 	for (j = 0; j < LANES; j += LANES_W) {
-		lv lo, hi;
+		lv o[3], inv[3], tn, tx;
+		lm far_first[3];
 
 		if (!(mask >> j & ((1u << LANES_W) - 1)))
 			continue;
-		lo = lv_load(v->s.t_min + j);
-		hi = lv_load(t_max + j);
+		tn = lv_load(v->s.t_min + j);
+		tx = lv_load(t_max + j);
 		for (k = 0; k < 3; k++) {
-			lv inv = lv_load(v->inv[k] + j), o = lv_load(v->o[k] + j);
-			lm far_first = lv_lt(inv, zero);
-			lv t0 = lv_mul(lv_sub(lv_sel(far_first, b1[k], b0[k]), o), inv);
-			lv t1 = lv_mul(lv_sub(lv_sel(far_first, b0[k], b1[k]), o), inv);
-			lo = lv_max_first(t0, lo);
-			hi = lv_min_first(t1, hi);
+			o[k] = lv_load(v->o[k] + j);
+			inv[k] = lv_load(v->inv[k] + j);
+			far_first[k] = lv_lt(inv[k], zero);
 		}
-		lv_store(entry + j, lo);
-		in |= (uint32_t)lm_bits(lv_le(lo, hi)) << j;
+		for (c = 0; c < 4; c++) {
+			lv lo = tn, hi = tx;
+
+			if (!nd->slot[c])
+				continue;
+			for (k = 0; k < 3; k++) {
+				lv b0 = lv_set1(nd->lo[k][c]), b1 = lv_set1(nd->hi[k][c]);
+				lv t0 = lv_mul(lv_sub(lv_sel(far_first[k], b1, b0), o[k]), inv[k]);
+				lv t1 = lv_mul(lv_sub(lv_sel(far_first[k], b0, b1), o[k]), inv[k]);
+				lo = lv_max_first(t0, lo);
+				hi = lv_min_first(t1, hi);
+			}
+			if (entry)
+				lv_store(entry[c] + j, lo);
+			child[c] |= (uint32_t)lm_bits(lv_le(lo, hi)) << j;
+		}
 	}
-	return in & mask;
+	for (c = 0; c < 4; c++)
+		child[c] &= mask;
 }
 
 static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
@@ -131,10 +144,9 @@ static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray 
 		nd = &((const struct bvh4_node *)a->nodes)[accel_slot_index(slot)];
 		for (i = 0; i < LANES; i++)
 			bt[i] = b[i].t;
-		for (c = 0; c < 4; c++) {
-			child[c] = nd->slot[c] ? RAYS_WALK(child_lanes)(nd, c, &v, mask, bt, e[c]) : 0;
+		RAYS_WALK(node_lanes)(nd, &v, mask, bt, e, child);
+		for (c = 0; c < 4; c++)
 			in_any |= (unsigned)(child[c] != 0) << c;
-		}
 		if (!in_any)
 			continue;
 		/* The children in the order the packet's first ray meets
@@ -160,7 +172,7 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 	struct { size_t node; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
 	struct packet_rays v;
 	uint32_t all = packet_all(n), open = all;
-	double t[LANES], t_far[LANES], e[LANES];
+	double t[LANES], t_far[LANES];
 	size_t i;
 	int top = 0;
 
@@ -177,7 +189,7 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 	stack[top++].mask = open;
 	while (top > 0) {
 		const struct bvh4_node *nd;
-		uint32_t mask;
+		uint32_t mask, child[4];
 		int c;
 
 		top--;
@@ -185,13 +197,11 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 		if (!mask)
 			continue;
 		nd = &((const struct bvh4_node *)a->nodes)[stack[top].node];
+		RAYS_WALK(node_lanes)(nd, &v, mask, t_far, NULL, child);
 		for (c = 0; c < 4; c++) {
 			uintptr_t s = nd->slot[c];
-			uint32_t in;
+			uint32_t in = child[c] & open;
 
-			if (s == 0)
-				continue;
-			in = RAYS_WALK(child_lanes)(nd, c, &v, mask & open, t_far, e);
 			if (!in)
 				continue;
 			if (accel_slot_is_node(s)) {

@@ -15,6 +15,7 @@
 #include "accel/accel.h"
 #include "render/camera_span.h"
 #include "render/render_packet.h"
+#include "render/shade_lanes.h"
 #include "render/shade_hit.h"
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
@@ -32,6 +33,54 @@ bool render_packets_wanted(const struct accel *a)
  * the workers have: base/thread.h). */
 #define PACKET_DEPTH 8
 
+/* The hits among `hits` that shade_lanes shades as render_shade_point
+ * would (shade_lanes.h: point lights only, all of whose shadow answers
+ * the packet has; no highlight colour of a texture; no glass; a mirror's
+ * reflection seen already, slot[i] of seen), with what it needs of them
+ * in *sum; the other lanes are filled too, as the vectors read them. */
+static uint32_t lean_lanes(const struct render_job *job, const struct render_point *h,
+			   uint32_t hits, const int *slot, const struct color *seen, int level,
+			   struct shade_lanes *sum)
+{
+	const struct scene *sc = job->scene;
+	bool deeper = level < job->settings.recursion;
+	uint32_t lean = 0;
+	int i;
+
+	if (!hits || sc->n_special_lights || sc->n_lights > RENDER_SHADOW_KEPT)
+		return 0;
+	sum->reflects = 0;
+	sum->clamp = job->settings.clamp == RT_CLAMP_LEVEL;
+	for (i = 0; i < SHADE_LANES; i++) {
+		const struct render_point *q = &h[hits >> i & 1 ? i : __builtin_ctz(hits)];
+		const struct material *m = &q->hit->mat;
+		struct color s = slot[i] >= 0 && hits >> i & 1 ? seen[slot[i]] : q->base;
+
+		if (hits >> i & 1 && !q->spec && !(m->kt > 0.0) &&
+		    (slot[i] >= 0 || !(deeper && m->kr > 0.0))) {
+			lean |= (uint32_t)1 << i;
+			sum->reflects |= (uint32_t)(slot[i] >= 0) << i;
+		}
+		sum->base[0][i] = q->base.r;
+		sum->base[1][i] = q->base.g;
+		sum->base[2][i] = q->base.b;
+		sum->ka[i] = m->ka;
+		sum->kd[i] = m->kd;
+		sum->ks[i] = m->ks;
+		sum->kr[i] = m->kr;
+		sum->shininess[i] = m->shininess;
+		sum->refl[0][i] = q->refl.x;
+		sum->refl[1][i] = q->refl.y;
+		sum->refl[2][i] = q->refl.z;
+		sum->eps[i] = q->eps;
+		sum->seen[0][i] = s.r;
+		sum->seen[1][i] = s.g;
+		sum->seen[2][i] = s.b;
+	}
+	sum->lanes = lean;
+	return lean;
+}
+
 /* The colours of the rays r[0..n) (n <= ACCEL_PACKET) at `level`, as
  * render_trace gives them: the nearest hits in one packet, their shadow
  * rays in one packet a light, and their reflections (the mirrors' that
@@ -48,8 +97,11 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 	struct ray bounce[ACCEL_PACKET];
 	struct color seen[ACCEL_PACKET];
 	int slot[ACCEL_PACKET], nb = 0, i;
-	uint32_t hits = 0;
+	uint32_t hits = 0, lean;
+	struct shade_lanes sum;
 
+	for (i = n; i < ACCEL_PACKET; i++)
+		slot[i] = -1;
 	for (i = 0; i < n; i++) {
 		t_min[i] = render_offset(r[i].origin);
 		t[i] = INFINITY;
@@ -69,7 +121,19 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 	render_shadow_packets(sc, h, hits, &shadows);
 	if (nb > 0)
 		shade_packet(job, bounce, nb, level + 1, counts, seen);
+	lean = lean_lanes(job, h, hits, slot, seen, level, &sum);
+	if (lean) {
+		double c[3][SHADE_LANES];
+
+		counts->shadow += shade_lanes(&sum, &shadows, sc->lights, sc->n_lights, c);
+		counts->reflection += (uint64_t)__builtin_popcount(sum.reflects);
+		for (i = 0; i < n; i++)
+			if (lean >> i & 1)
+				out[i] = color_make(c[0][i], c[1][i], c[2][i]);
+	}
 	for (i = 0; i < n; i++) {
+		if (lean >> i & 1)
+			continue;
 		out[i] = color_make(0.0, 0.0, 0.0);
 		shadows.bit = i;
 		if (hit[i])

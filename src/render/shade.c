@@ -119,25 +119,20 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 		const struct light *lt = &s->lights[j];
 		struct ray r[ACCEL_PACKET];
 		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
-		struct light_dirs dirs;
+		struct light_dirs own, *dirs = j < RENDER_SHADOW_KEPT ? &out->dirs[j] : &own;
 		int bit[ACCEL_PACKET], k = 0;
 		uint32_t m, blocked;
 
 		out->traced[j] = out->blocked[j] = 0;
 		/* The ray render_direct (or render_direct_full) makes, by the
 		 * same arithmetic, and only where it makes one. */
-		light_dirs(&pts, lt->pos, &dirs);
+		light_dirs(&pts, lt->pos, dirs);
 		for (m = mask; m; m &= m - 1) {
 			int b = __builtin_ctz(m);
 			const struct render_point *q = &h[b];
-			struct vec3 l = vec3_make(dirs.lx[b], dirs.ly[b], dirs.lz[b]);
-			double dist = dirs.dist[b], nl = dirs.nl[b];
+			struct vec3 l = vec3_make(dirs->lx[b], dirs->ly[b], dirs->lz[b]);
+			double dist = dirs->dist[b], nl = dirs->nl[b];
 
-			if (j < RENDER_SHADOW_KEPT) {
-				out->l[j][b] = l;
-				out->dist[j][b] = dist;
-				out->nl[j][b] = nl;
-			}
 			if (!(dist > q->eps) || nl <= 0.0)
 				continue;
 			if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
@@ -184,9 +179,10 @@ static inline struct color render_direct(const struct scene *s, const struct mat
 			struct vec3 to_light;
 
 			if (pre && i0 + i < RENDER_SHADOW_KEPT) {
-				l[i] = pre->l[i0 + i][pre->bit];
-				dist[i] = pre->dist[i0 + i][pre->bit];
-				nl[i] = pre->nl[i0 + i][pre->bit];
+				const struct light_dirs *dl = &pre->dirs[i0 + i];
+				l[i] = vec3_make(dl->lx[pre->bit], dl->ly[pre->bit], dl->lz[pre->bit]);
+				dist[i] = dl->dist[pre->bit];
+				nl[i] = dl->nl[pre->bit];
 				continue;
 			}
 			to_light = vec3_sub(s->lights[i0 + i].pos, p);

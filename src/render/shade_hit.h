@@ -9,6 +9,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 
+#include "render/light_dirs.h"
 #include "whitted/render.h"
 #include "whitted/shape.h"
 #include "whitted/vec3.h"
@@ -32,13 +33,11 @@ struct render_point {
  * arithmetic), made once for the shadow rays and the shading both. */
 #define RENDER_SHADOW_LIGHTS 32
 #define RENDER_SHADOW_KEPT 8
-#define RENDER_SHADOW_POINTS 16	/* ACCEL_PACKET */
+#define RENDER_SHADOW_POINTS 16	/* ACCEL_PACKET, LIGHT_DIRS_LANES */
 struct render_shadows {
 	uint32_t traced[RENDER_SHADOW_LIGHTS], blocked[RENDER_SHADOW_LIGHTS];
 	int bit;
-	struct vec3 l[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
-	double dist[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
-	double nl[RENDER_SHADOW_KEPT][RENDER_SHADOW_POINTS];
+	struct light_dirs dirs[RENDER_SHADOW_KEPT];
 };
 
 /* The point of ray r at t on hit (not NULL). */

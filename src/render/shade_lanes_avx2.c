@@ -1,0 +1,15 @@
+/* shade_lanes in AVX2 (four lanes), compiled with -mavx2 on x86 (the
+ * Makefile) and chosen where the processor has it (shade_lanes.c);
+ * elsewhere NULL. */
+#include <stddef.h>
+
+#include "render/shade_lanes.h"
+
+#if defined(__AVX2__) && !defined(ACCEL_PORTABLE)
+#define SHADE_LANES_FN(name) shade_lanes_avx2_##name
+#include "render/shade_lanes_sum.h"
+
+shade_lanes_fn *const shade_lanes_avx2 = SHADE_LANES_FN(sum);
+#else
+shade_lanes_fn *const shade_lanes_avx2 = NULL;
+#endif
