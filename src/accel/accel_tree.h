@@ -183,6 +183,14 @@ void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, i
 uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				      const double *t_min, const double *t_max);
 bool accel_avx512_compiled(void);
+/* For the tests: node's children as the AVX-512 walk's float test sees
+ * them for ray r in (t_min, t_max) (its mask, the entries in
+ * float_entry), or -1 where that walk tests the ray in doubles; and as
+ * the double test sees them (*exact_mask, exact_entry; 0 where this file
+ * was compiled without AVX-512). */
+int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
+			    double t_max, double float_entry[8], int *exact_mask,
+			    double exact_entry[8]);
 
 /* The packets through a four-child tree, a ray a vector lane
  * (accel_packet_rays.h): in SSE2 or plain C (accel_packet_rays.c), AVX2

@@ -10,7 +10,7 @@ int rt_simd_cpu_has(enum rt_simd s)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(ACCEL_PORTABLE)
 	switch (s) {
 	case RT_SIMD_AVX512:
-		return __builtin_cpu_supports("avx512f");
+		return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
 	case RT_SIMD_AVX2:
 		return __builtin_cpu_supports("avx2");
 	default:

@@ -1,0 +1,193 @@
+/* The AVX-512 walk's float box tests against the double ones every other
+ * walk does (accel_walk_avx512.c): wherever the double test enters a
+ * child, the float test must enter it too, at an entry no later; else
+ * the walks could meet different shapes and the images part.  Random
+ * nodes and rays at every scale, and the hard cases on purpose: origins
+ * on a box's faces, edges and corners and a surface offset away from
+ * them (shadow rays), rays along a face (zero components, slabs of
+ * 0 * inf), directions nearly parallel to an axis, flat and empty boxes,
+ * t_max exactly at a child's entry (a tie at the hit), huge t_max. */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "accel/accel_tree.h"
+#include "support.h"
+
+#define TRIALS 400000
+
+static double pick(const double *v, int n)
+{
+	return v[(int)(support_rng() * n) % n];
+}
+
+static double scale_now(void)
+{
+	static const double scales[] = { 1e-3, 1.0, 20.0, 100.0, 1e4, 1e6, 1e9 };
+
+	return pick(scales, 7);
+}
+
+/* A node of eight random children around 0 at scale s: boxes, flat ones
+ * (lo = hi on an axis), points, and an empty one now and then. */
+static void random_node(struct bvh8_node *n, double s)
+{
+	int c, k;
+
+	memset(n, 0, sizeof(*n));
+	for (c = 0; c < 8; c++) {
+		double kind = support_rng();
+
+		n->slot[c] = 1;
+		for (k = 0; k < 3; k++) {
+			double centre = support_uniform(-s, s), half = support_uniform(0.0, s);
+			if (kind < 0.15)
+				half = 0.0;	/* a point */
+			else if (kind < 0.35 && k == c % 3)
+				half = 0.0;	/* flat */
+			n->lo[k][c] = (float)(centre - half);
+			n->hi[k][c] = (float)(centre + half);
+			if (n->hi[k][c] < n->lo[k][c])
+				n->hi[k][c] = n->lo[k][c];
+		}
+		if (kind > 0.97)
+			for (k = 0; k < 3; k++) {
+				n->lo[k][c] = INFINITY;
+				n->hi[k][c] = -INFINITY;
+			}
+	}
+}
+
+/* A coordinate of the ray's origin on axis k: anywhere, or on one of the
+ * children's planes, or just off it. */
+static double origin_coord(const struct bvh8_node *n, int k, double s)
+{
+	double kind = support_rng();
+	int c = (int)(support_rng() * 8) % 8;
+	double plane = support_rng() < 0.5 ? n->lo[k][c] : n->hi[k][c];
+
+	if (!isfinite(plane) || kind < 0.4)
+		return support_uniform(-2.0 * s, 2.0 * s);
+	if (kind < 0.7)
+		return plane;
+	return plane + support_uniform(-1.0, 1.0) * 1e-6 * fmax(1.0, fabs(plane));
+}
+
+static double dir_coord(void)
+{
+	static const double tiny[] = { 0.0, -0.0, 1e-9, -1e-9, 6e-8, -6e-8, 1e-7, -3e-7, 1e-5 };
+	double kind = support_rng();
+
+	if (kind < 0.2)
+		return pick(tiny, 9);
+	return support_uniform(-1.0, 1.0);
+}
+
+static void random_ray(const struct bvh8_node *n, double s, struct ray *r)
+{
+	double len;
+
+	r->origin = vec3_make(origin_coord(n, 0, s), origin_coord(n, 1, s), origin_coord(n, 2, s));
+	do {
+		r->dir = vec3_make(dir_coord(), dir_coord(), dir_coord());
+		len = vec3_length(r->dir);
+	} while (!(len > 1e-3));
+	/* Unit, as the renderer's are, but for a zero kept zero. */
+	r->dir = vec3_scale(r->dir, 1.0 / len);
+}
+
+static void test_float_box_tests_enter_every_box_the_double_test_enters(void **state)
+{
+	long trials = 0, floats = 0, entered = 0, ties = 0;
+
+	(void)state;
+	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX-512 here: the float box tests cannot run\n");
+		skip();
+	}
+	support_rng_seed(20261203);
+	for (trials = 0; trials < TRIALS; trials++) {
+		struct bvh8_node n;
+		struct ray r;
+		double s = scale_now(), fe[8], xe[8], t_min, t_max, m;
+		int fmask, xmask, c;
+
+		random_node(&n, s);
+		random_ray(&n, s, &r);
+		m = fmax(1.0, fmax(fabs(r.origin.x), fmax(fabs(r.origin.y), fabs(r.origin.z))));
+		t_min = support_rng() < 0.5 ? 1e-6 * m : support_rng() < 0.5 ? 0.0 : support_uniform(0.0, s);
+		t_max = support_rng() < 0.3 ? INFINITY : t_min + support_uniform(0.0, 4.0 * s);
+		if (support_rng() < 0.05)
+			t_max = 1e300;
+		fmask = accel_avx512_node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
+		if (xmask && support_rng() < 0.3) {
+			/* Again with t_max at an entry the double test found:
+			 * the tie at a hit's distance must stay entered. */
+			for (c = 0; c < 8 && !(xmask >> c & 1); c++)
+				;
+			if (xe[c] >= t_min) {
+				t_max = xe[c];
+				fmask = accel_avx512_node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
+				ties++;
+			}
+		}
+		if (fmask < 0)
+			continue;
+		floats++;
+		for (c = 0; c < 8; c++) {
+			if (!(xmask >> c & 1))
+				continue;
+			entered++;
+			if (!(fmask >> c & 1) || !(fe[c] <= xe[c]))
+				fail_msg("child %d: the double test enters at %.17g, the float test %s "
+					 "(%.17g); ray (%.17g %.17g %.17g) + t (%.17g %.17g %.17g), "
+					 "t in (%.17g, %.17g), box x [%.9g %.9g] y [%.9g %.9g] z "
+					 "[%.9g %.9g]",
+					 c, xe[c], fmask >> c & 1 ? "later" : "not at all", fe[c],
+					 r.origin.x, r.origin.y, r.origin.z, r.dir.x, r.dir.y, r.dir.z,
+					 t_min, t_max, n.lo[0][c], n.hi[0][c], n.lo[1][c], n.hi[1][c],
+					 n.lo[2][c], n.hi[2][c]);
+		}
+	}
+	/* Not vacuous: most rays take the floats, and many boxes are met. */
+	assert_true(floats > trials / 2);
+	assert_true(entered > trials / 4);
+	assert_true(ties > trials / 50);
+}
+
+/* The rays the bound cannot hold go to the double test. */
+static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **state)
+{
+	static const struct vec3 origins[] = { { 2e30, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+	static const struct vec3 dirs[] = { { 1, 0, 0 }, { 1e-9, 1, 0 }, { NAN, 1, 0 }, { 0, 1, 0 } };
+	static const double t_mins[] = { 0.0, 0.0, 0.0, -1.0 };
+	struct bvh8_node n;
+	double fe[8], xe[8];
+	int xmask, i;
+
+	(void)state;
+	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX-512 here: the float box tests cannot run\n");
+		skip();
+	}
+	support_rng_seed(7);
+	random_node(&n, 1.0);
+	for (i = 0; i < 4; i++) {
+		struct ray r;
+
+		r.origin = origins[i];
+		r.dir = dirs[i];
+		assert_int_equal(accel_avx512_node_tests(&n, &r, t_mins[i], INFINITY, fe, &xmask, xe), -1);
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(test_float_box_tests_enter_every_box_the_double_test_enters),
+		cmocka_unit_test(test_float_box_tests_leave_rays_they_cannot_bound_to_doubles),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
