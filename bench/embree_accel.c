@@ -286,6 +286,20 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	return blocked;
 }
 
+uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			      const double *t_min, const double *t_max)
+{
+	uint32_t blocked = 0, m;
+
+	for (m = active; m; m &= m - 1) {
+		int i = __builtin_ctz(m);
+		struct ray r = ray_packet_get(p, i);
+		if (accel_occluded(a, &r, t_min[i], t_max[i]))
+			blocked |= (uint32_t)1 << i;
+	}
+	return blocked;
+}
+
 bool accel_packets_pay(const struct accel *a)
 {
 	(void)a;

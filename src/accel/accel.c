@@ -202,6 +202,37 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	}
 }
 
+uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			      const double *t_min, const double *t_max)
+{
+	struct ray r[ACCEL_PACKET];
+	double t0[ACCEL_PACKET], t1[ACCEL_PACKET];
+	int bit[ACCEL_PACKET], n = 0, i;
+	uint32_t m, packed, blocked = 0;
+
+	if (a->walk == ACCEL_WALK_BASE) {
+		if (a->rays == ACCEL_WALK_AVX512)
+			return accel_avx512_rays_occluded_lanes(a, p, active, t_min, t_max);
+		if (a->rays == ACCEL_WALK_AVX2)
+			return accel_avx2_rays_occluded_lanes(a, p, active, t_min, t_max);
+		return accel_rays_occluded_lanes(a, p, active, t_min, t_max);
+	}
+	/* The wide trees' packets take the rays one by one. */
+	for (m = active; m; m &= m - 1) {
+		bit[n] = __builtin_ctz(m);
+		r[n] = ray_packet_get(p, bit[n]);
+		t0[n] = t_min[bit[n]];
+		t1[n] = t_max[bit[n]];
+		n++;
+	}
+	if (n == 0)
+		return 0;
+	packed = accel_occluded_packet(a, r, n, t0, t1);
+	for (i = 0; i < n; i++)
+		blocked |= (packed >> i & 1u) << bit[i];
+	return blocked;
+}
+
 bool accel_packets_pay(const struct accel *a)
 {
 	return a->walk != ACCEL_WALK_BASE || a->rays != ACCEL_WALK_BASE;

@@ -38,6 +38,14 @@ void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 			    const double *t_min, double *t_max, const struct shape **hit);
 uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
 			       const double *t_min, const double *t_max);
+/* accel_occluded_packet for the rays of p's lanes in `active` (bits
+ * below ACCEL_PACKET), left where they are: the mask of those blocked.
+ * Every lane below ACCEL_PACKET is filled (one not active with any ray:
+ * the copy of another, say), as the tests may read whole runs of them;
+ * for shadow rays made a vector at a time (render_shadow_packets), which
+ * then need no gathering into single rays and back. */
+uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			      const double *t_min, const double *t_max);
 /* Whether packets are faster than single rays here: where the walks have
  * the AVX2 or AVX-512 box tests (a tree big enough; see accel_build.c),
  * or a small tree's packets go a ray a vector lane in AVX2 or AVX-512

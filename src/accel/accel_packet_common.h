@@ -14,12 +14,12 @@
 #include "accel/accel_walk_common.h"
 
 /* A packet's rays as the shapes take them, and their t_min: every lane
- * filled (those past the n rays with ray 0), as intersect_packet may read
- * whole runs; and the rays one by one, r. */
+ * filled (those past the n rays with ray 0, or those of no ray with a
+ * copy of another), as intersect_packet may read whole runs.  A ray
+ * tested alone is made from its lane (ray_packet_get: the same values). */
 struct packet_shape_rays {
 	struct ray_packet p;
 	double t_min[ACCEL_PACKET];
-	const struct ray *r;
 };
 
 /* A shape is tested for at most this many of a packet's rays one ray at a
@@ -34,7 +34,6 @@ static inline void packet_shape_rays_load(struct packet_shape_rays *s, const str
 {
 	int i;
 
-	s->r = r;
 	for (i = 0; i < ACCEL_PACKET; i++) {
 		int j = i < n ? i : 0;
 		ray_packet_set(&s->p, i, r + j);
@@ -74,7 +73,8 @@ static inline void packet_best_test(const struct shape *sh, uint32_t key,
 	if (packet_few(mask)) {
 		for (m = mask; m; m &= m - 1) {
 			int i = __builtin_ctz(m);
-			best_test(&b[i], sh, key, s->r + i, s->t_min[i]);
+			struct ray one = ray_packet_get(&s->p, i);
+			best_test(&b[i], sh, key, &one, s->t_min[i]);
 		}
 		return;
 	}
@@ -114,7 +114,8 @@ static inline uint32_t packet_leaf_any(const struct accel *a, uintptr_t slot,
 	if (packet_few(mask)) {
 		for (m = mask; m; m &= m - 1) {
 			int i = __builtin_ctz(m);
-			if (leaf_occluded(a, slot, s->r + i, s->t_min[i], t_max[i]))
+			struct ray one = ray_packet_get(&s->p, i);
+			if (leaf_occluded(a, slot, &one, s->t_min[i], t_max[i]))
 				blocked |= (uint32_t)1 << i;
 		}
 		return blocked;

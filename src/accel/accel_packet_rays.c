@@ -13,6 +13,12 @@ void accel_rays_intersect_packet(const struct accel *a, const struct ray *r, int
 	RAYS_WALK(intersect_packet)(a, r, n, t_min, t_max, hit);
 }
 
+uint32_t accel_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
+				   uint32_t active, const double *t_min, const double *t_max)
+{
+	return RAYS_WALK(occluded_lanes)(a, p, active, t_min, t_max);
+}
+
 uint32_t accel_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				    const double *t_min, const double *t_max)
 {

@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "accel/accel_float_box.h"
 #include "accel/accel_packet_common.h"
 #include "accel/accel_tree.h"
 #include "base/lanes.h"
@@ -27,23 +28,87 @@
 
 #ifndef RT_ACCEL_PACKET_RAYS_COMMON
 #define RT_ACCEL_PACKET_RAYS_COMMON
-/* The packet's rays as the box tests take them, every lane filled. */
+/* The packet's rays as the box tests take them, every lane filled; and
+ * where the AVX-512 walk's float tests hold every lane tested (floats), those
+ * tests' own (accel_float_box.h): o, inv and t_min to the nearest float,
+ * e, and the lanes whose axis k has its maximum as the near plane. */
 struct packet_rays {
 	struct packet_shape_rays s;
-	double o[3][LANES], inv[3][LANES];
+	double inv[3][LANES];
+	bool floats;
+	float of[3][LANES], invf[3][LANES], errf[LANES], t_minf[LANES];
+	uint32_t far_first[3];
 };
 #endif
 
-static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, int n,
-				   const double *t_min)
+#if defined(__AVX512F__) && !defined(ACCEL_PORTABLE) && ACCEL_PACKET == 16
+#define RAYS_FLOATS 1
+/* Sixteen doubles to the nearest floats, by the processor's conversion
+ * (which takes a finite value beyond the floats' range to +-inf). */
+static inline __m512 rays_floats16(const double *v)
+{
+	__m256 lo = _mm512_cvtpd_ps(_mm512_loadu_pd(v)), hi = _mm512_cvtpd_ps(_mm512_loadu_pd(v + 8));
+
+	return _mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(lo)),
+						   _mm256_castps_pd(hi), 1));
+}
+#else
+#define RAYS_FLOATS 0
+#endif
+
+#if RAYS_FLOATS
+/* float_box_ray for every lane, and each lane's e (float_box_err), a
+ * vector of lanes at a time: the same tests and the same arithmetic. */
+static inline void RAYS_WALK(load_floats)(struct packet_rays *v, uint32_t active)
+{
+	const __m512d sign = _mm512_set1_pd(-0.0), zero = _mm512_setzero_pd();
+	const __m512d inf = _mm512_set1_pd(INFINITY);
+	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
+	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
+	bool ok = true;
+	int j, k;
+
+	for (j = 0; j < LANES; j += 8) {
+		__m512d t = _mm512_loadu_pd(v->s.t_min + j), e = zero;
+		__mmask8 m = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ) &
+			     _mm512_cmp_pd_mask(t, _mm512_set1_pd(FLOAT_BOX_T_MIN_MAX), _CMP_LE_OQ);
+
+		for (k = 0; k < 3; k++) {
+			__m512d o = _mm512_loadu_pd(o_of[k] + j), inv = _mm512_loadu_pd(v->inv[k] + j);
+			__m512d dk = _mm512_loadu_pd(d[k] + j);
+			__m512d oi = _mm512_castsi512_pd(_mm512_andnot_si512(
+				_mm512_castpd_si512(sign), _mm512_castpd_si512(_mm512_mul_pd(o, inv))));
+			__m512d ao = _mm512_castsi512_pd(
+				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(o)));
+			__m512d ad = _mm512_castsi512_pd(
+				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(dk)));
+			__m512d ai = _mm512_castsi512_pd(
+				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(inv)));
+			__mmask8 finite = _mm512_cmp_pd_mask(ai, inf, _CMP_NEQ_UQ);
+
+			m &= _mm512_cmp_pd_mask(ao, _mm512_set1_pd(ACCEL_COORD_MAX), _CMP_LE_OQ);
+			m &= _mm512_cmp_pd_mask(dk, zero, _CMP_EQ_OQ) |
+			     _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MIN), _CMP_GE_OQ);
+			/* e = oi where inv is finite and oi > e */
+			e = _mm512_mask_blend_pd(finite & _mm512_cmp_pd_mask(oi, e, _CMP_GT_OQ), e, oi);
+		}
+		if ((m & (active >> j & 0xffu)) != (active >> j & 0xffu))
+			ok = false;
+		e = _mm512_mul_pd(_mm512_mul_pd(e, _mm512_set1_pd(FLOAT_BOX_ABS)),
+				  _mm512_set1_pd(1.0 + 0x1p-20));
+		_mm256_storeu_ps(v->errf + j, _mm512_cvtpd_ps(e));
+	}
+	v->floats = ok;
+}
+#endif
+
+/* What the box tests need of v's rays besides the shapes' (filled), for
+ * the lanes of `active`. */
+static inline void RAYS_WALK(prepare)(struct packet_rays *v, uint32_t active)
 {
 	const lv one = lv_set1(1.0), zero = lv_set1(0.0);
 	int j;
 
-	packet_shape_rays_load(&v->s, r, n, t_min);
-	memcpy(v->o[0], v->s.p.ox, sizeof(v->o[0]));
-	memcpy(v->o[1], v->s.p.oy, sizeof(v->o[1]));
-	memcpy(v->o[2], v->s.p.oz, sizeof(v->o[2]));
 	/* As ray_slab_init: + 0.0 makes -0 take the minimum as its near
 	 * plane. */
 	for (j = 0; j < LANES; j += LANES_W) {
@@ -51,7 +116,79 @@ static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, i
 		lv_store(v->inv[1] + j, lv_div(one, lv_add(lv_load(v->s.p.dy + j), zero)));
 		lv_store(v->inv[2] + j, lv_div(one, lv_add(lv_load(v->s.p.dz + j), zero)));
 	}
+	v->floats = false;
+	(void)active;
+#if RAYS_FLOATS
+	RAYS_WALK(load_floats)(v, active);
+	if (v->floats) {
+		const double *o[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
+		int k;
+
+		for (k = 0; k < 3; k++) {
+			__m512 inv = rays_floats16(v->inv[k]);
+			_mm512_storeu_ps(v->of[k], rays_floats16(o[k]));
+			_mm512_storeu_ps(v->invf[k], inv);
+			v->far_first[k] = _mm512_cmp_ps_mask(inv, _mm512_setzero_ps(), _CMP_LT_OQ);
+		}
+		_mm512_storeu_ps(v->t_minf, rays_floats16(v->s.t_min));
+	}
+#endif
 }
+
+static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, int n,
+				   const double *t_min)
+{
+	packet_shape_rays_load(&v->s, r, n, t_min);
+	RAYS_WALK(prepare)(v, packet_all(n));
+}
+
+#if RAYS_FLOATS
+/* node_lanes in floats, all sixteen lanes in one operation, widened as
+ * accel_float_box.h says: every child the double test enters for a lane
+ * is entered, at an entry no later; so the walks meet a superset of the
+ * shapes, and give the same answers.  For packets whose every lane the
+ * float tests hold (v->floats). */
+static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
+						const struct packet_rays *v, uint32_t mask,
+						const double *t_max, double (*entry)[LANES],
+						uint32_t child[4])
+{
+	const __m512 down = _mm512_set1_ps(1.0f - FLOAT_BOX_REL), up = _mm512_set1_ps(1.0f + FLOAT_BOX_REL);
+	const __m512 tn = _mm512_loadu_ps(v->t_minf), tx = rays_floats16(t_max);
+	const __m512 err = _mm512_loadu_ps(v->errf);
+	__m512 o[3], inv[3];
+	int c, k;
+
+	for (k = 0; k < 3; k++) {
+		o[k] = _mm512_loadu_ps(v->of[k]);
+		inv[k] = _mm512_loadu_ps(v->invf[k]);
+	}
+	for (c = 0; c < 4; c++) {
+		__m512 lo = tn, hi = tx;
+
+		child[c] = 0;
+		if (!nd->slot[c])
+			continue;
+		for (k = 0; k < 3; k++) {
+			__m512 b0 = _mm512_set1_ps(nd->lo[k][c]), b1 = _mm512_set1_ps(nd->hi[k][c]);
+			__mmask16 ff = (__mmask16)v->far_first[k];
+			__m512 t0 = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(ff, b0, b1), o[k]), inv[k]);
+			__m512 t1 = _mm512_mul_ps(_mm512_sub_ps(_mm512_mask_blend_ps(ff, b1, b0), o[k]), inv[k]);
+			lo = _mm512_max_ps(t0, lo);
+			hi = _mm512_min_ps(t1, hi);
+		}
+		lo = _mm512_fmsub_ps(lo, down, err);
+		hi = _mm512_fmadd_ps(hi, up, err);
+		child[c] = (uint32_t)_mm512_cmp_ps_mask(lo, hi, _CMP_LE_OQ) & mask;
+		if (entry) {
+			_mm512_storeu_pd(entry[c], _mm512_cvtps_pd(_mm512_castps512_ps256(lo)));
+			_mm512_storeu_pd(entry[c] + 8,
+					 _mm512_cvtps_pd(_mm256_castpd_ps(
+						 _mm512_extractf64x4_pd(_mm512_castps_pd(lo), 1))));
+		}
+	}
+}
+#endif
 
 /* The lanes of `mask` entering each child of node nd within (t_min,
  * t_max[lane]) into child[c] (none for an empty slot), and, where entry
@@ -77,7 +214,7 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 		tn = lv_load(v->s.t_min + j);
 		tx = lv_load(t_max + j);
 		for (k = 0; k < 3; k++) {
-			o[k] = lv_load(v->o[k] + j);
+			o[k] = lv_load((k == 0 ? v->s.p.ox : k == 1 ? v->s.p.oy : v->s.p.oz) + j);
 			inv[k] = lv_load(v->inv[k] + j);
 			far_first[k] = lv_lt(inv[k], zero);
 		}
@@ -100,6 +237,21 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 	}
 	for (c = 0; c < 4; c++)
 		child[c] &= mask;
+}
+
+/* The children's lanes by the float tests where they hold the packet,
+ * else by the double ones. */
+static inline void RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct packet_rays *v,
+					uint32_t mask, const double *t_max, double (*entry)[LANES],
+					uint32_t child[4])
+{
+#if RAYS_FLOATS
+	if (v->floats) {
+		RAYS_WALK(node_lanes_floats)(nd, v, mask, t_max, entry, child);
+		return;
+	}
+#endif
+	RAYS_WALK(node_lanes)(nd, v, mask, t_max, entry, child);
 }
 
 static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
@@ -144,7 +296,7 @@ static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray 
 		nd = &((const struct bvh4_node *)a->nodes)[accel_slot_index(slot)];
 		for (i = 0; i < LANES; i++)
 			bt[i] = b[i].t;
-		RAYS_WALK(node_lanes)(nd, &v, mask, bt, e, child);
+		RAYS_WALK(node_test)(nd, &v, mask, bt, e, child);
 		for (c = 0; c < 4; c++)
 			in_any |= (unsigned)(child[c] != 0) << c;
 		if (!in_any)
@@ -166,22 +318,20 @@ static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray 
 	}
 }
 
-static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct ray *r, int n,
-					   const double *t_min, const double *t_max)
+/* Which rays of `all` anything blocks in (t_min, t_far[lane]): v's
+ * rays, loaded. */
+static uint32_t RAYS_WALK(occluded_rays)(const struct accel *a, const struct packet_rays *v,
+					 uint32_t all, const double *t_far)
 {
 	struct { size_t node; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
-	struct packet_rays v;
-	uint32_t all = packet_all(n), open = all;
-	double t[LANES], t_far[LANES];
+	uint32_t open = all;
+	double t[LANES];
 	size_t i;
 	int top = 0;
 
-	RAYS_WALK(load)(&v, r, n, t_min);
-	for (i = 0; i < LANES; i++)
-		t_far[i] = t_max[i < (size_t)n ? i : 0];
 	for (i = 0; i < a->n_unbounded && open; i++) {
 		memcpy(t, t_far, sizeof(t));
-		open &= ~shape_intersect_packet(a->unbounded[i], &v.s.p, open, v.s.t_min, t);
+		open &= ~shape_intersect_packet(a->unbounded[i], &v->s.p, open, v->s.t_min, t);
 	}
 	if (a->n_nodes == 0 || !open)
 		return all & ~open;
@@ -197,7 +347,7 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 		if (!mask)
 			continue;
 		nd = &((const struct bvh4_node *)a->nodes)[stack[top].node];
-		RAYS_WALK(node_lanes)(nd, &v, mask, t_far, NULL, child);
+		RAYS_WALK(node_test)(nd, v, mask, t_far, NULL, child);
 		for (c = 0; c < 4; c++) {
 			uintptr_t s = nd->slot[c];
 			uint32_t in = child[c] & open;
@@ -209,11 +359,46 @@ static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct r
 				stack[top++].mask = in;
 				continue;
 			}
-			open &= ~packet_leaf_any(a, s, &v.s, in, t_far);
+			open &= ~packet_leaf_any(a, s, &v->s, in, t_far);
 			if (!open)
 				return all;
 		}
 	}
 	return all & ~open;
 }
+
+static uint32_t RAYS_WALK(occluded_packet)(const struct accel *a, const struct ray *r, int n,
+					   const double *t_min, const double *t_max)
+{
+	struct packet_rays v;
+	double t_far[LANES];
+	size_t i;
+
+	RAYS_WALK(load)(&v, r, n, t_min);
+	for (i = 0; i < LANES; i++)
+		t_far[i] = t_max[i < (size_t)n ? i : 0];
+	return RAYS_WALK(occluded_rays)(a, &v, packet_all(n), t_far);
+}
+
+/* accel_occluded_lanes: the packet's lanes as they are, those of
+ * `active` traced. */
+static uint32_t RAYS_WALK(occluded_lanes)(const struct accel *a, const struct ray_packet *p,
+					  uint32_t active, const double *t_min,
+					  const double *t_max)
+{
+	struct packet_rays v;
+	double t_far[LANES];
+
+	memcpy(v.s.p.ox, p->ox, sizeof(double) * LANES);
+	memcpy(v.s.p.oy, p->oy, sizeof(double) * LANES);
+	memcpy(v.s.p.oz, p->oz, sizeof(double) * LANES);
+	memcpy(v.s.p.dx, p->dx, sizeof(double) * LANES);
+	memcpy(v.s.p.dy, p->dy, sizeof(double) * LANES);
+	memcpy(v.s.p.dz, p->dz, sizeof(double) * LANES);
+	memcpy(v.s.t_min, t_min, sizeof(v.s.t_min));
+	memcpy(t_far, t_max, sizeof(t_far));
+	RAYS_WALK(prepare)(&v, active);
+	return RAYS_WALK(occluded_rays)(a, &v, active, t_far);
+}
 #undef LANES
+#undef RAYS_FLOATS

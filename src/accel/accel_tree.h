@@ -208,5 +208,13 @@ void accel_avx512_rays_intersect_packet(const struct accel *a, const struct ray 
 					const struct shape **hit);
 uint32_t accel_avx512_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
 					   const double *t_min, const double *t_max);
+/* accel_occluded_lanes's contract, a ray a vector lane likewise. */
+uint32_t accel_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
+				   uint32_t active, const double *t_min, const double *t_max);
+uint32_t accel_avx2_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
+					uint32_t active, const double *t_min, const double *t_max);
+uint32_t accel_avx512_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
+					  uint32_t active, const double *t_min,
+					  const double *t_max);
 
 #endif

@@ -4,23 +4,24 @@
  * floats, eight to a 256-bit operation: half the work of the doubles the
  * other walks test in (the float boxes widened to double, eight to a
  * 512-bit operation, which a processor that splits those in two pays
- * twice), the course's 100k cloud 0.85x the time.  The float answer is
- * widened by a bound on its rounding error (walk_ray_init), so every box
+ * twice), the course's 100k cloud 0.88x the time.  The float answer is
+ * widened by a bound on its rounding error (accel_float_box.h), so every box
  * the double test enters is entered here too, at an entry no later: the
  * walk meets a superset of the shapes the other walks meet, in another
  * order, and since the nearest hit with the keys' tie rule and whether a
  * shadow ray is blocked do not depend on either (accel_walk.h), every
  * ray's answer, and so every image, is theirs.  A ray the bound cannot
- * hold (a coordinate of its origin beyond ACCEL_COORD_MAX, a direction
- * nearly but not quite parallel to an axis, a NaN) is tested in doubles,
- * as the other walks test it, to the bit. */
+ * hold is tested in doubles, as the other walks test it, to the bit: the
+ * walks are here twice, over either test, and a ray (or a packet, if any
+ * of its rays) takes the double ones from the start, so that the float
+ * walk's loops carry no second test. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "accel/accel.h"
-#include "accel/accel_build.h"
+#include "accel/accel_float_box.h"
 #include "accel/accel_slab.h"
 #include "accel/accel_tree.h"
 
@@ -29,44 +30,6 @@
 
 #define ACCEL_NODE struct bvh8_node
 #define ACCEL_W 8
-
-/* The float test is (b - o) * inv for the plane b, each operand and
- * result rounded to a float: with u = 2^-24, o off by at most u |o|, so
- * the slab distance T = (b - o) inv comes out within 3u |T| + u |o inv|
- * (to first order; the double test's own error is 2^-52 |T|).  The walk
- * widens each interval [lo, hi] to [lo (1 - 8u) - e, hi (1 + 8u) + e]
- * with e = 4u max |o inv| over the axes: more than twice the error, its
- * own rounding included.  (lo is at least t_min >= 0, so the product
- * lowers it; hi below 0 is at most the error below it where the double
- * test enters, which e then covers.)  An axis along which the ray does
- * not move (inv infinite) has no error to bound: its distances are +-inf
- * as in doubles, or NaN (constraining nothing) where the origin rounded
- * onto the plane, and an end at +-inf stays there.  The bound needs every
- * distance finite in float: box coordinates and the origin's of at most
- * ACCEL_COORD_MAX (1e30) and |inv| of at most 2^24 make |b - o| |inv| at
- * most 3.4e37, and t_min must be at most 1e37.  Other rays (walk_floats
- * false: a far origin, a direction nearly but not quite parallel to an
- * axis, a NaN, a t_min below 0) are tested in doubles, as the other walks
- * test them, to the bit. */
-#define WALK_FLOAT_REL 0x1p-21f		/* 8u */
-#define WALK_FLOAT_ABS 0x1p-22		/* 4u */
-#define WALK_FLOAT_DIR_MIN 0x1p-24	/* |inv| at most 2^24 */
-#define WALK_FLOAT_T_MIN_MAX 1e37
-
-static inline bool walk_floats(const struct ray *r, double t_min)
-{
-	const double o[3] = { r->origin.x, r->origin.y, r->origin.z };
-	const double d[3] = { r->dir.x, r->dir.y, r->dir.z };
-	int k;
-
-	if (!(t_min >= 0.0 && t_min <= WALK_FLOAT_T_MIN_MAX))
-		return false;
-	for (k = 0; k < 3; k++)
-		if (!(fabs(o[k]) <= ACCEL_COORD_MAX) ||
-		    !(d[k] == 0.0 || fabs(d[k]) >= WALK_FLOAT_DIR_MIN))
-			return false;
-	return true;
-}
 
 /* v to the nearest float, broadcast: the processor's conversion, which
  * takes a finite v beyond the floats' range to +-inf (a C cast leaves
@@ -84,19 +47,13 @@ struct walk_ray_float {
 
 static inline void walk_ray_float_init(struct walk_ray_float *v, const struct ray_slab *rs)
 {
-	double e = 0.0;
 	int k;
 
 	for (k = 0; k < 3; k++) {
-		double inv = rs->inv[k];
-
 		v->o[k] = float_set1(rs->o[k]);
-		v->inv[k] = float_set1(inv);
-		if (inv != INFINITY && inv != -INFINITY && fabs(rs->o[k] * inv) > e)
-			e = fabs(rs->o[k] * inv);
+		v->inv[k] = float_set1(rs->inv[k]);
 	}
-	/* Rounded up, and then some, on its way to a float. */
-	v->err = float_set1(e * WALK_FLOAT_ABS * (1.0 + 0x1p-20));
+	v->err = float_set1(float_box_err(rs->o, rs->inv));
 	ray_slab_offsets(rs, ACCEL_W, v->near_off, v->far_off);
 }
 
@@ -121,8 +78,8 @@ static inline __m512d node_interval_float(const struct bvh8_node *node,
 	hi = _mm256_min_ps(slab_f(b, v->far_off[1], v->o[1], v->inv[1]), hi);
 	lo = _mm256_max_ps(slab_f(b, v->near_off[2], v->o[2], v->inv[2]), lo);
 	hi = _mm256_min_ps(slab_f(b, v->far_off[2], v->o[2], v->inv[2]), hi);
-	lo = _mm256_fmsub_ps(lo, _mm256_set1_ps(1.0f - WALK_FLOAT_REL), v->err);
-	hi = _mm256_fmadd_ps(hi, _mm256_set1_ps(1.0f + WALK_FLOAT_REL), v->err);
+	lo = _mm256_fmsub_ps(lo, _mm256_set1_ps(1.0f - FLOAT_BOX_REL), v->err);
+	hi = _mm256_fmadd_ps(hi, _mm256_set1_ps(1.0f + FLOAT_BOX_REL), v->err);
 	*mask = _mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ));
 	return _mm512_cvtps_pd(lo);
 }
@@ -242,7 +199,7 @@ static bool walk_floats_all(const struct ray *r, int n, const double *t_min)
 	int i;
 
 	for (i = 0; i < n; i++)
-		if (!walk_floats(r + i, t_min[i]))
+		if (!float_box_ray(r + i, t_min[i]))
 			return false;
 	return true;
 }
@@ -250,14 +207,14 @@ static bool walk_floats_all(const struct ray *r, int n, const double *t_min)
 static const struct shape *walk_avx512_intersect(const struct accel *a, const struct ray *r,
 						 double t_min, double *t_max)
 {
-	return walk_floats(r, t_min) ? walk_avx512_float_intersect(a, r, t_min, t_max)
+	return float_box_ray(r, t_min) ? walk_avx512_float_intersect(a, r, t_min, t_max)
 				     : walk_avx512_exact_intersect(a, r, t_min, t_max);
 }
 
 static bool walk_avx512_occluded(const struct accel *a, const struct ray *r, double t_min,
 				 double t_max)
 {
-	return walk_floats(r, t_min) ? walk_avx512_float_occluded(a, r, t_min, t_max)
+	return float_box_ray(r, t_min) ? walk_avx512_float_occluded(a, r, t_min, t_max)
 				     : walk_avx512_exact_occluded(a, r, t_min, t_max);
 }
 
@@ -291,7 +248,7 @@ int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, d
 	ray_slab_init(&rs, r);
 	walk_ray_exact_init(&x, &rs);
 	*exact_mask = node_entries_exact(node, &x, t_min, t_max, exact_entry);
-	if (walk_floats(r, t_min)) {
+	if (float_box_ray(r, t_min)) {
 		walk_ray_float_init(&f, &rs);
 		mask = node_entries_float(node, &f, t_min, t_max, float_entry);
 	}

@@ -49,6 +49,13 @@ uint32_t ACCEL_EXPORT(rays_occluded_packet)(const struct accel *a, const struct 
 	return RAYS_WALK(occluded_packet)(a, r, n, t_min, t_max);
 }
 
+uint32_t ACCEL_EXPORT(rays_occluded_lanes)(const struct accel *a, const struct ray_packet *p,
+					   uint32_t active, const double *t_min,
+					   const double *t_max)
+{
+	return RAYS_WALK(occluded_lanes)(a, p, active, t_min, t_max);
+}
+
 bool ACCEL_EXPORT(compiled)(void)
 {
 	return true;
@@ -107,6 +114,18 @@ uint32_t ACCEL_EXPORT(rays_occluded_packet)(const struct accel *a, const struct 
 					    const double *t_min, const double *t_max)
 {
 	return ACCEL_EXPORT(occluded_packet)(a, r, n, t_min, t_max);
+}
+
+uint32_t ACCEL_EXPORT(rays_occluded_lanes)(const struct accel *a, const struct ray_packet *p,
+					   uint32_t active, const double *t_min,
+					   const double *t_max)
+{
+	(void)a;
+	(void)p;
+	(void)active;
+	(void)t_min;
+	(void)t_max;
+	return 0;
 }
 
 bool ACCEL_EXPORT(compiled)(void)

@@ -7,25 +7,21 @@
 #define LIGHT_DIRS(name) light_dirs_base_##name
 #include "render/light_dirs_lanes.h"
 
-void (*const light_dirs_base)(const struct light_dirs_points *p, struct vec3 pos,
-			      struct light_dirs *out) = LIGHT_DIRS(dirs);
+light_dirs_fn *const light_dirs_base = LIGHT_DIRS(dirs);
 
-void light_dirs(const struct light_dirs_points *p, struct vec3 pos, struct light_dirs *out)
+uint32_t light_dirs(const struct light_dirs_points *p, struct vec3 pos, struct light_dirs *out,
+		    struct light_rays *rays)
 {
 	switch (rt_simd_level()) {
 	case RT_SIMD_AVX512:
-		if (light_dirs_avx512) {
-			light_dirs_avx512(p, pos, out);
-			return;
-		}
+		if (light_dirs_avx512)
+			return light_dirs_avx512(p, pos, out, rays);
 		/* fall through */
 	case RT_SIMD_AVX2:
-		if (light_dirs_avx2) {
-			light_dirs_avx2(p, pos, out);
-			return;
-		}
+		if (light_dirs_avx2)
+			return light_dirs_avx2(p, pos, out, rays);
 		/* fall through */
 	default:
-		LIGHT_DIRS(dirs)(p, pos, out);
+		return LIGHT_DIRS(dirs)(p, pos, out, rays);
 	}
 }

@@ -3,19 +3,26 @@
  * instructions the processor has (base/simd.h): each lane's values are
  * the shading's to the bit (vec3_sub, vec3_length, vec3_scale by 1 /
  * dist, vec3_dot), so that a packet's shadow rays and its shading share
- * them.  For render_shadow_packets. */
+ * them; and the shadow rays themselves, as render_direct makes them
+ * (from p + eps l along l, to dist - eps), made a vector at a time into
+ * the lanes the walks take (accel_occluded_lanes).  For
+ * render_shadow_packets. */
 #ifndef RT_RENDER_LIGHT_DIRS_H
 #define RT_RENDER_LIGHT_DIRS_H
 
+#include <stdint.h>
+
+#include "whitted/shape.h"
 #include "whitted/vec3.h"
 
 #define LIGHT_DIRS_LANES 16
 
-/* The points and their normals, a coordinate an array; every lane
- * filled. */
+/* The points, their normals and offsets, a coordinate an array; every
+ * lane filled. */
 struct light_dirs_points {
 	double px[LIGHT_DIRS_LANES], py[LIGHT_DIRS_LANES], pz[LIGHT_DIRS_LANES];
 	double nx[LIGHT_DIRS_LANES], ny[LIGHT_DIRS_LANES], nz[LIGHT_DIRS_LANES];
+	double eps[LIGHT_DIRS_LANES];
 };
 
 struct light_dirs {
@@ -23,16 +30,24 @@ struct light_dirs {
 	double dist[LIGHT_DIRS_LANES], nl[LIGHT_DIRS_LANES];
 };
 
-/* Every lane's direction from the point to the light at pos. */
-void light_dirs(const struct light_dirs_points *p, struct vec3 pos, struct light_dirs *out);
+/* Each lane's shadow ray: from p + eps l along l, in (eps, dist - eps). */
+struct light_rays {
+	struct ray_packet p;	/* lanes below LIGHT_DIRS_LANES */
+	double t_min[LIGHT_DIRS_LANES], t_max[LIGHT_DIRS_LANES];
+};
+
+/* Every lane's direction from the point to the light at pos, and where
+ * rays is not NULL its shadow ray; returns the lanes whose shading asks
+ * for that ray (dist > eps and not N.L <= 0, as render_direct tests). */
+uint32_t light_dirs(const struct light_dirs_points *p, struct vec3 pos, struct light_dirs *out,
+		    struct light_rays *rays);
 
 /* One set of instructions' light_dirs (the baseline's always there; the
  * others NULL in a file compiled without them). */
-extern void (*const light_dirs_base)(const struct light_dirs_points *p, struct vec3 pos,
-				     struct light_dirs *out);
-extern void (*const light_dirs_avx2)(const struct light_dirs_points *p, struct vec3 pos,
-				     struct light_dirs *out);
-extern void (*const light_dirs_avx512)(const struct light_dirs_points *p, struct vec3 pos,
-				       struct light_dirs *out);
+typedef uint32_t light_dirs_fn(const struct light_dirs_points *p, struct vec3 pos,
+			       struct light_dirs *out, struct light_rays *rays);
+extern light_dirs_fn *const light_dirs_base;
+extern light_dirs_fn *const light_dirs_avx2;
+extern light_dirs_fn *const light_dirs_avx512;
 
 #endif

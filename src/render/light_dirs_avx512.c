@@ -8,9 +8,7 @@
 #define LIGHT_DIRS(name) light_dirs_avx512_##name
 #include "render/light_dirs_lanes.h"
 
-void (*const light_dirs_avx512)(const struct light_dirs_points *p, struct vec3 pos,
-			      struct light_dirs *out) = LIGHT_DIRS(dirs);
+light_dirs_fn *const light_dirs_avx512 = LIGHT_DIRS(dirs);
 #else
-void (*const light_dirs_avx512)(const struct light_dirs_points *p, struct vec3 pos,
-			      struct light_dirs *out) = NULL;
+light_dirs_fn *const light_dirs_avx512 = NULL;
 #endif

@@ -99,8 +99,8 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 			   struct render_shadows *out)
 {
 	size_t nl = s->n_lights < RENDER_SHADOW_LIGHTS ? s->n_lights : RENDER_SHADOW_LIGHTS, j;
-
 	struct light_dirs_points pts;
+	struct light_rays rays;
 	int i;
 
 	if (!mask)
@@ -114,42 +114,27 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 		pts.nx[i] = q->n.x;
 		pts.ny[i] = q->n.y;
 		pts.nz[i] = q->n.z;
+		pts.eps[i] = q->eps;
 	}
 	for (j = 0; j < nl; j++) {
 		const struct light *lt = &s->lights[j];
-		struct ray r[ACCEL_PACKET];
-		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
 		struct light_dirs own, *dirs = j < RENDER_SHADOW_KEPT ? &out->dirs[j] : &own;
-		int bit[ACCEL_PACKET], k = 0;
-		uint32_t m, blocked;
+		uint32_t m, asks;
 
-		out->traced[j] = out->blocked[j] = 0;
-		/* The ray render_direct (or render_direct_full) makes, by the
+		/* The rays render_direct (or render_direct_full) makes, by the
 		 * same arithmetic, and only where it makes one. */
-		light_dirs(&pts, lt->pos, dirs);
-		for (m = mask; m; m &= m - 1) {
-			int b = __builtin_ctz(m);
-			const struct render_point *q = &h[b];
-			struct vec3 l = vec3_make(dirs->lx[b], dirs->ly[b], dirs->lz[b]);
-			double dist = dirs->dist[b], nl = dirs->nl[b];
-
-			if (!(dist > q->eps) || nl <= 0.0)
-				continue;
-			if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
-				continue;
-			r[k].origin = vec3_add_scaled(q->p, l, q->eps);
-			r[k].dir = l;
-			t_min[k] = q->eps;
-			t_max[k] = dist - q->eps;
-			bit[k++] = b;
-		}
-		if (k == 0)
-			continue;
-		blocked = accel_occluded_packet(s->accel, r, k, t_min, t_max);
-		for (i = 0; i < k; i++) {
-			out->traced[j] |= (uint32_t)1 << bit[i];
-			out->blocked[j] |= (uint32_t)(blocked >> i & 1) << bit[i];
-		}
+		asks = light_dirs(&pts, lt->pos, dirs, &rays) & mask;
+		if (lt->spot)
+			for (m = asks; m; m &= m - 1) {
+				int b = __builtin_ctz(m);
+				struct vec3 l = vec3_make(dirs->lx[b], dirs->ly[b], dirs->lz[b]);
+				if (!(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
+					asks &= ~((uint32_t)1 << b);
+			}
+		out->traced[j] = asks;
+		out->blocked[j] = asks ? accel_occluded_lanes(s->accel, &rays.p, asks, rays.t_min,
+							      rays.t_max)
+				       : 0;
 	}
 }
 

@@ -4,7 +4,8 @@
  * processor runs (SSE2 over four children, AVX2 and AVX-512 over eight), on random scenes of every primitive with packets
  * coherent and not (rays that disagree on which child is nearer), exact
  * ties (copies of one shape, cubes that share faces), rays along box faces
- * and edges (slabs of 0 * inf), and a shape with its own packet method. */
+ * and edges (slabs of 0 * inf), and a shape with its own packet method;
+ * and shadow rays given as lanes in place (accel_occluded_lanes). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -52,6 +53,48 @@ static void add_random_shape(struct scene *s, struct vec3 c, double size)
 	}
 }
 
+/* The same rays as lanes left in place (accel_occluded_lanes): the n rays
+ * spread over the packet's lanes in a random order, some lanes left out
+ * (filled with a copy of another ray, as the caller's), and each active
+ * lane blocked exactly when its ray alone is. */
+static void check_lanes_with(const struct accel *a, const struct ray *r, int n,
+			     const double *t_min, const double *t_max)
+{
+	struct ray_packet p;
+	double lo[ACCEL_PACKET], hi[ACCEL_PACKET];
+	int ray_of[ACCEL_PACKET], i;
+	uint32_t active = 0, blocked;
+
+	memset(&p, 0, sizeof(p));
+	for (i = 0; i < ACCEL_PACKET; i++) {
+		int k = (int)(support_rng() * n) % n;
+		struct ray copy = r[k];
+
+		ray_of[i] = k;
+		if (support_rng() < 0.8)
+			active |= (uint32_t)1 << i;
+		ray_packet_set(&p, i, &copy);
+		lo[i] = t_min[k];
+		hi[i] = t_max[k];
+	}
+	blocked = accel_occluded_lanes(a, &p, active, lo, hi);
+	assert_int_equal(blocked & ~active, 0);
+	for (i = 0; i < ACCEL_PACKET; i++) {
+		bool occ;
+
+		if (!(active >> i & 1))
+			continue;
+		occ = accel_occluded(a, &r[ray_of[i]], lo[i], hi[i]);
+		if (occ != (bool)(blocked >> i & 1)) {
+			print_error("lane %d (ray %d of %d, %s, packets %d): occluded alone %d, in "
+				    "lanes %d\n",
+				    i, ray_of[i], n, accel_walk_name(a), (int)a->rays, occ,
+				    (int)(blocked >> i & 1));
+			fail();
+		}
+	}
+}
+
 /* Compares one packet with the single-ray walks of the same hierarchy:
  * shapes, t to the bit, occlusion; and with the first walk's (the base
  * one's) single rays. */
@@ -86,6 +129,7 @@ static void check_packet_with(const struct accel *a, const struct accel *base,
 		}
 	}
 	assert_int_equal(blocked >> n, 0);
+	check_lanes_with(a, r, n, t_min, t_max);
 }
 
 /* With every walk of w. */

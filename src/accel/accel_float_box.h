@@ -1,0 +1,67 @@
+/* The float box tests of the AVX-512 walks (accel_walk_avx512.c, and the
+ * small trees' packets in accel_packet_rays.h): which rays they can
+ * bound, and by how much they widen.  Private to src/accel/.
+ *
+ * The float test is (b - o) * inv for the plane b, each operand and
+ * result rounded to a float: with u = 2^-24, o off by at most u |o|, so
+ * the slab distance T = (b - o) inv comes out within 3u |T| + u |o inv|
+ * (to first order; the double test's own error is 2^-52 |T|).  The walks
+ * widen each interval [lo, hi] to [lo (1 - 8u) - e, hi (1 + 8u) + e]
+ * with e = 4u max |o inv| over the axes: more than twice the error, its
+ * own rounding included.  (lo is at least t_min >= 0, so the product
+ * lowers it; hi below 0 is at most the error below it where the double
+ * test enters, which e then covers.)  An axis along which the ray does
+ * not move (inv infinite) has no error to bound: its distances are +-inf
+ * as in doubles, or NaN (constraining nothing) where the origin rounded
+ * onto the plane, and an end at +-inf stays there.  The bound needs every
+ * distance finite in float: box coordinates and the origin's of at most
+ * ACCEL_COORD_MAX (1e30) and |inv| of at most 2^24 make |b - o| |inv| at
+ * most 3.4e37, and t_min must be at most 1e37.  Other rays (float_box_ray
+ * false: a far origin, a direction nearly but not quite parallel to an
+ * axis, a NaN, a t_min below 0) are tested in doubles, as the other walks
+ * test them, to the bit.  tests/unit/accel/test_accel_float_box.c holds
+ * the bound to random boxes and rays. */
+#ifndef RT_ACCEL_FLOAT_BOX_H
+#define RT_ACCEL_FLOAT_BOX_H
+
+#include <math.h>
+#include <stdbool.h>
+
+#include "accel/accel_build.h"
+#include "whitted/ray.h"
+
+#define FLOAT_BOX_REL 0x1p-21f		/* 8u */
+#define FLOAT_BOX_ABS 0x1p-22		/* 4u */
+#define FLOAT_BOX_DIR_MIN 0x1p-24	/* |inv| at most 2^24 */
+#define FLOAT_BOX_T_MIN_MAX 1e37
+
+/* Whether the float tests can bound ray r from t_min on. */
+static inline bool float_box_ray(const struct ray *r, double t_min)
+{
+	const double o[3] = { r->origin.x, r->origin.y, r->origin.z };
+	const double d[3] = { r->dir.x, r->dir.y, r->dir.z };
+	int k;
+
+	if (!(t_min >= 0.0 && t_min <= FLOAT_BOX_T_MIN_MAX))
+		return false;
+	for (k = 0; k < 3; k++)
+		if (!(fabs(o[k]) <= ACCEL_COORD_MAX) ||
+		    !(d[k] == 0.0 || fabs(d[k]) >= FLOAT_BOX_DIR_MIN))
+			return false;
+	return true;
+}
+
+/* e of a ray, from its origin and reciprocal direction, rounded up (and
+ * then some) on its way to a float by the caller. */
+static inline double float_box_err(const double o[3], const double inv[3])
+{
+	double e = 0.0;
+	int k;
+
+	for (k = 0; k < 3; k++)
+		if (inv[k] != INFINITY && inv[k] != -INFINITY && fabs(o[k] * inv[k]) > e)
+			e = fabs(o[k] * inv[k]);
+	return e * FLOAT_BOX_ABS * (1.0 + 0x1p-20);
+}
+
+#endif
