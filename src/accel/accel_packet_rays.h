@@ -28,10 +28,11 @@
 
 #ifndef RT_ACCEL_PACKET_RAYS_COMMON
 #define RT_ACCEL_PACKET_RAYS_COMMON
-/* The packet's rays as the box tests take them, every lane filled; and
- * where the AVX-512 walk's float tests hold every lane tested (floats), those
- * tests' own (accel_float_box.h): o, inv and t_min to the nearest float,
- * e, and the lanes whose axis k has its maximum as the near plane. */
+/* The packet's rays as the box tests take them, every lane filled: the
+ * double tests' reciprocal directions, or where the AVX-512 walk's float
+ * tests hold every lane tested (floats), those tests' own values
+ * (accel_float_box.h) and the lanes whose axis k has its maximum as the
+ * near plane. */
 struct packet_rays {
 	struct packet_shape_rays s;
 	double inv[3][LANES];
@@ -56,55 +57,8 @@ static inline __m512 rays_floats16(const double *v)
 #define RAYS_FLOATS 0
 #endif
 
-#if RAYS_FLOATS
-/* float_box_ray for every lane, and each lane's e (float_box_err), a
- * vector of lanes at a time: the same tests and the same arithmetic. */
-static inline void RAYS_WALK(load_floats)(struct packet_rays *v, uint32_t active)
-{
-	const __m512d sign = _mm512_set1_pd(-0.0), zero = _mm512_setzero_pd();
-	const __m512d inf = _mm512_set1_pd(INFINITY);
-	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
-	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
-	bool ok = true;
-	int j, k;
-
-	for (j = 0; j < LANES; j += 8) {
-		__m512d t = _mm512_loadu_pd(v->s.t_min + j), e = zero;
-		__mmask8 m = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ) &
-			     _mm512_cmp_pd_mask(t, _mm512_set1_pd(FLOAT_BOX_T_MIN_MAX), _CMP_LE_OQ);
-
-		for (k = 0; k < 3; k++) {
-			__m512d o = _mm512_loadu_pd(o_of[k] + j), inv = _mm512_loadu_pd(v->inv[k] + j);
-			__m512d dk = _mm512_loadu_pd(d[k] + j);
-			__m512d oi = _mm512_castsi512_pd(_mm512_andnot_si512(
-				_mm512_castpd_si512(sign), _mm512_castpd_si512(_mm512_mul_pd(o, inv))));
-			__m512d ao = _mm512_castsi512_pd(
-				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(o)));
-			__m512d ad = _mm512_castsi512_pd(
-				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(dk)));
-			__m512d ai = _mm512_castsi512_pd(
-				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(inv)));
-			__mmask8 finite = _mm512_cmp_pd_mask(ai, inf, _CMP_NEQ_UQ);
-
-			m &= _mm512_cmp_pd_mask(ao, _mm512_set1_pd(ACCEL_COORD_MAX), _CMP_LE_OQ);
-			m &= _mm512_cmp_pd_mask(dk, zero, _CMP_EQ_OQ) |
-			     _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MIN), _CMP_GE_OQ);
-			/* e = oi where inv is finite and oi > e */
-			e = _mm512_mask_blend_pd(finite & _mm512_cmp_pd_mask(oi, e, _CMP_GT_OQ), e, oi);
-		}
-		if ((m & (active >> j & 0xffu)) != (active >> j & 0xffu))
-			ok = false;
-		e = _mm512_mul_pd(_mm512_mul_pd(e, _mm512_set1_pd(FLOAT_BOX_ABS)),
-				  _mm512_set1_pd(1.0 + 0x1p-20));
-		_mm256_storeu_ps(v->errf + j, _mm512_cvtpd_ps(e));
-	}
-	v->floats = ok;
-}
-#endif
-
-/* What the box tests need of v's rays besides the shapes' (filled), for
- * the lanes of `active`. */
-static inline void RAYS_WALK(prepare)(struct packet_rays *v, uint32_t active)
+/* The reciprocal directions of the double tests. */
+static inline void RAYS_WALK(prepare_doubles)(struct packet_rays *v)
 {
 	const lv one = lv_set1(1.0), zero = lv_set1(0.0);
 	int j;
@@ -116,23 +70,87 @@ static inline void RAYS_WALK(prepare)(struct packet_rays *v, uint32_t active)
 		lv_store(v->inv[1] + j, lv_div(one, lv_add(lv_load(v->s.p.dy + j), zero)));
 		lv_store(v->inv[2] + j, lv_div(one, lv_add(lv_load(v->s.p.dz + j), zero)));
 	}
-	v->floats = false;
-	(void)active;
+}
+
 #if RAYS_FLOATS
-	RAYS_WALK(load_floats)(v, active);
-	if (v->floats) {
-		const double *o[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
-		int k;
+/* Whether float_box_ray holds for every lane of `active`, a vector of
+ * lanes at a time: the same tests. */
+static inline bool RAYS_WALK(floats_hold)(const struct packet_rays *v, uint32_t active)
+{
+	const __m512d sign = _mm512_set1_pd(-0.0), zero = _mm512_setzero_pd();
+	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
+	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
+	int j, k;
+
+	for (j = 0; j < LANES; j += 8) {
+		__m512d t = _mm512_loadu_pd(v->s.t_min + j);
+		__mmask8 want = (__mmask8)(active >> j & 0xffu);
+		__mmask8 m = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ) &
+			     _mm512_cmp_pd_mask(t, _mm512_set1_pd(FLOAT_BOX_T_MIN_MAX), _CMP_LE_OQ);
 
 		for (k = 0; k < 3; k++) {
-			__m512 inv = rays_floats16(v->inv[k]);
-			_mm512_storeu_ps(v->of[k], rays_floats16(o[k]));
-			_mm512_storeu_ps(v->invf[k], inv);
-			v->far_first[k] = _mm512_cmp_ps_mask(inv, _mm512_setzero_ps(), _CMP_LT_OQ);
+			__m512d o = _mm512_loadu_pd(o_of[k] + j), dk = _mm512_loadu_pd(d[k] + j);
+			__m512d ao = _mm512_castsi512_pd(
+				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(o)));
+			__m512d ad = _mm512_castsi512_pd(
+				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(dk)));
+
+			m &= _mm512_cmp_pd_mask(ao, _mm512_set1_pd(ACCEL_COORD_MAX), _CMP_LE_OQ);
+			m &= _mm512_cmp_pd_mask(dk, zero, _CMP_EQ_OQ) |
+			     _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MIN), _CMP_GE_OQ);
 		}
-		_mm512_storeu_ps(v->t_minf, rays_floats16(v->s.t_min));
+		if ((m & want) != want)
+			return false;
+	}
+	return true;
+}
+
+/* The float tests' values, all sixteen lanes at once: o and t_min to the
+ * nearest float, inv the inverse of d rounded to a float (within 2u of
+ * 1 / d: accel_float_box.h), e from those in float (at least 4u |o inv|
+ * (1 - 5u), as the bound wants). */
+static inline void RAYS_WALK(prepare_floats)(struct packet_rays *v)
+{
+	const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1.0f);
+	const __m512 inf = _mm512_set1_ps(INFINITY);
+	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
+	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
+	__m512 e = zero;
+	int k;
+
+	for (k = 0; k < 3; k++) {
+		__m512 o = rays_floats16(o_of[k]);
+		__m512 inv = _mm512_div_ps(one, _mm512_add_ps(rays_floats16(d[k]), zero));
+		__m512 oi = _mm512_abs_ps(_mm512_mul_ps(o, inv));
+		__mmask16 finite = _mm512_cmp_ps_mask(_mm512_abs_ps(inv), inf, _CMP_NEQ_UQ);
+
+		_mm512_storeu_ps(v->of[k], o);
+		_mm512_storeu_ps(v->invf[k], inv);
+		v->far_first[k] = _mm512_cmp_ps_mask(inv, zero, _CMP_LT_OQ);
+		e = _mm512_mask_blend_ps(finite & _mm512_cmp_ps_mask(oi, e, _CMP_GT_OQ), e, oi);
+	}
+	e = _mm512_mul_ps(_mm512_mul_ps(e, _mm512_set1_ps((float)FLOAT_BOX_ABS)),
+			  _mm512_set1_ps(1.0f + 0x1p-20f));
+	_mm512_storeu_ps(v->errf, e);
+	_mm512_storeu_ps(v->t_minf, rays_floats16(v->s.t_min));
+}
+#endif
+
+/* What the box tests need of v's rays besides the shapes' (filled), for
+ * the lanes of `active`: the float tests' values where they hold those
+ * lanes, else the double tests'. */
+static inline void RAYS_WALK(prepare)(struct packet_rays *v, uint32_t active)
+{
+	(void)active;
+#if RAYS_FLOATS
+	v->floats = RAYS_WALK(floats_hold)(v, active);
+	if (v->floats) {
+		RAYS_WALK(prepare_floats)(v);
+		return;
 	}
 #endif
+	v->floats = false;
+	RAYS_WALK(prepare_doubles)(v);
 }
 
 static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, int n,

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "accel/accel.h"
 #include "whitted/diag.h"
 #include "whitted/ray.h"
 #include "whitted/shape.h"
@@ -191,6 +192,16 @@ bool accel_avx512_compiled(void);
 int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
 			    double t_max, double float_entry[8], int *exact_mask,
 			    double exact_entry[8]);
+/* Likewise for the small trees' packets (accel_packet_rays.h): the
+ * children of node each of the ACCEL_PACKET rays r enters in (t_min[i],
+ * t_max[i]) by the float test (float_child[c] bit i, the entries in
+ * float_entry[c][i]), and by the double test (exact_child, exact_entry);
+ * returns 1, or 0 where the float tests do not hold the packet (and
+ * leave float_* alone), -1 without AVX-512 (and leave all alone). */
+int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
+				 const double *t_min, const double *t_max, uint32_t float_child[4],
+				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
+				 double exact_entry[4][ACCEL_PACKET]);
 
 /* The packets through a four-child tree, a ray a vector lane
  * (accel_packet_rays.h): in SSE2 or plain C (accel_packet_rays.c), AVX2

@@ -259,6 +259,25 @@ int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, d
 #define RAYS_WALK(name) rays_avx512_##name
 #include "accel/accel_packet_rays.h"
 
+int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
+				 const double *t_min, const double *t_max, uint32_t float_child[4],
+				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
+				 double exact_entry[4][ACCEL_PACKET])
+{
+	struct packet_rays v;
+	bool floats;
+
+	rays_avx512_load(&v, r, ACCEL_PACKET, t_min);
+	floats = v.floats;
+	rays_avx512_prepare_doubles(&v);
+	rays_avx512_node_lanes(node, &v, packet_all(ACCEL_PACKET), t_max, exact_entry, exact_child);
+	if (!floats)
+		return 0;
+	rays_avx512_node_lanes_floats(node, &v, packet_all(ACCEL_PACKET), t_max, float_entry,
+				      float_child);
+	return 1;
+}
+
 #define ACCEL_COMPILED 1
 #else
 int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
@@ -272,6 +291,22 @@ int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, d
 	(void)float_entry;
 	(void)exact_entry;
 	*exact_mask = 0;
+	return -1;
+}
+
+int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
+				 const double *t_min, const double *t_max, uint32_t float_child[4],
+				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
+				 double exact_entry[4][ACCEL_PACKET])
+{
+	(void)node;
+	(void)r;
+	(void)t_min;
+	(void)t_max;
+	(void)float_child;
+	(void)float_entry;
+	(void)exact_child;
+	(void)exact_entry;
 	return -1;
 }
 #endif

@@ -6,7 +6,8 @@
  * on a box's faces, edges and corners and a surface offset away from
  * them (shadow rays), rays along a face (zero components, slabs of
  * 0 * inf), directions nearly parallel to an axis, flat and empty boxes,
- * t_max exactly at a child's entry (a tie at the hit), huge t_max. */
+ * t_max exactly at a child's entry (a tie at the hit), huge t_max; for
+ * single rays over eight children and for packets of sixteen over four. */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -156,6 +157,96 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 	assert_true(ties > trials / 50);
 }
 
+/* A four-child node from the first four children of an eight-child one. */
+static void random_node4(struct bvh4_node *n4, double s)
+{
+	struct bvh8_node n8;
+	int c, k;
+
+	random_node(&n8, s);
+	memset(n4, 0, sizeof(*n4));
+	for (c = 0; c < 4; c++) {
+		n4->slot[c] = 1;
+		for (k = 0; k < 3; k++) {
+			n4->lo[k][c] = n8.lo[k][c];
+			n4->hi[k][c] = n8.hi[k][c];
+		}
+	}
+}
+
+/* The small trees' packets (a ray a lane, sixteen lanes in one float
+ * operation): the same property lane by lane, for packets of shadow-like
+ * rays from points near the boxes and of rays from one point. */
+static void test_float_box_tests_of_packets_enter_every_box_the_double_test_enters(void **state)
+{
+	long packets = 0, floats = 0, entered = 0;
+
+	(void)state;
+	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX-512 here: the float box tests cannot run\n");
+		skip();
+	}
+	support_rng_seed(3);
+	for (packets = 0; packets < TRIALS / ACCEL_PACKET; packets++) {
+		struct bvh4_node n4;
+		struct bvh8_node n8;
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+		double fe[4][ACCEL_PACKET], xe[4][ACCEL_PACKET];
+		uint32_t fc[4], xc[4];
+		double s = scale_now();
+		bool one_origin = support_rng() < 0.5;
+		int i, c, got;
+
+		random_node4(&n4, s);
+		memset(&n8, 0, sizeof(n8));
+		memcpy(n8.lo, n4.lo, sizeof(n4.lo));	/* the planes origin_coord picks from */
+		for (c = 0; c < 4; c++)
+			for (i = 0; i < 3; i++) {
+				n8.lo[i][c] = n4.lo[i][c];
+				n8.hi[i][c] = n4.hi[i][c];
+				n8.lo[i][c + 4] = n4.lo[i][c];
+				n8.hi[i][c + 4] = n4.hi[i][c];
+			}
+		for (i = 0; i < ACCEL_PACKET; i++) {
+			double m;
+
+			random_ray(&n8, s, &r[i]);
+			/* A packet with a ray nearly along an axis goes to the
+			 * doubles whole: keep most packets to the floats. */
+			if (support_rng() < 0.95 && !(fabs(r[i].dir.x) >= 0x1p-24 || r[i].dir.x == 0.0))
+				r[i].dir.x = 0.0;
+			if (support_rng() < 0.95 && !(fabs(r[i].dir.y) >= 0x1p-24 || r[i].dir.y == 0.0))
+				r[i].dir.y = 0.0;
+			if (support_rng() < 0.95 && !(fabs(r[i].dir.z) >= 0x1p-24 || r[i].dir.z == 0.0))
+				r[i].dir.z = 0.0;
+			if (one_origin && i > 0)
+				r[i].origin = r[0].origin;
+			m = fmax(1.0, fmax(fabs(r[i].origin.x), fmax(fabs(r[i].origin.y), fabs(r[i].origin.z))));
+			t_min[i] = support_rng() < 0.6 ? 1e-6 * m : support_uniform(0.0, s);
+			t_max[i] = support_rng() < 0.3 ? INFINITY : t_min[i] + support_uniform(0.0, 4.0 * s);
+		}
+		got = accel_avx512_rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
+		assert_true(got >= 0);
+		if (got == 0)
+			continue;
+		floats++;
+		for (c = 0; c < 4; c++)
+			for (i = 0; i < ACCEL_PACKET; i++) {
+				if (!(xc[c] >> i & 1))
+					continue;
+				entered++;
+				if (!(fc[c] >> i & 1) || !(fe[c][i] <= xe[c][i]))
+					fail_msg("packet %ld, child %d, lane %d: the double test enters at "
+						 "%.17g, the float test %s (%.17g)",
+						 packets, c, i, xe[c][i], fc[c] >> i & 1 ? "later" : "not at all",
+						 fe[c][i]);
+			}
+	}
+	assert_true(floats > packets / 10);
+	assert_true(entered > packets);
+}
+
 /* The rays the bound cannot hold go to the double test. */
 static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **state)
 {
@@ -187,6 +278,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_float_box_tests_enter_every_box_the_double_test_enters),
 		cmocka_unit_test(test_float_box_tests_leave_rays_they_cannot_bound_to_doubles),
+		cmocka_unit_test(test_float_box_tests_of_packets_enter_every_box_the_double_test_enters),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
