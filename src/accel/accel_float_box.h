@@ -3,12 +3,15 @@
  * bound, and by how much they widen.  Private to src/accel/.
  *
  * The float test is (b - o) * inv for the plane b, each operand and
- * result rounded to a float: with u = 2^-24, o off by at most u |o|, so
- * the slab distance T = (b - o) inv comes out within 3u |T| + u |o inv|
- * (to first order; the double test's own error is 2^-52 |T|).  The walks
- * widen each interval [lo, hi] to [lo (1 - 8u) - e, hi (1 + 8u) + e]
- * with e = 4u max |o inv| over the axes: more than twice the error, its
- * own rounding included.  (lo is at least t_min >= 0, so the product
+ * result rounded to a float: with u = 2^-24, o off by at most u |o| and
+ * inv within 2u of 1 / d (the nearest float of the double inverse, or
+ * the float inverse of d's nearest float), so the slab distance T =
+ * (b - o) inv comes out within 4u |T| + u |o inv| (to first order; the
+ * double test's own error is 2^-52 |T|).  The walks widen each interval
+ * [lo, hi] to [lo (1 - 8u) - e, hi (1 + 8u) + e] with e at least
+ * 4u (1 - 5u) max |o inv| over the axes: the interval then holds the
+ * double test's with 3u |T| to spare, the widening's own rounding
+ * included.  (lo is at least t_min >= 0, so the product
  * lowers it; hi below 0 is at most the error below it where the double
  * test enters, which e then covers.)  An axis along which the ray does
  * not move (inv infinite) has no error to bound: its distances are +-inf
