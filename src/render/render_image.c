@@ -16,28 +16,6 @@
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
 
-/* lround(255 c) for c in [0, 1], without the library call or a
- * comparison: with v = 255 c = i + f (i whole, f in [0, 1)), v + v is
- * exact and its whole part is 2 i + (f >= 1/2), so adding 1 and halving
- * gives i + (f >= 1/2), which rounds half away from zero as lround does.
- * (NaN was made 0 by the clamp, as lround's result cast to a byte would
- * be.) */
-static uint8_t render_channel(double c)
-{
-	double v = 255.0 * c;
-
-	return (uint8_t)(((int)(v + v) + 1) >> 1);
-}
-
-/* Inline in the block loop; render_color_to_rgb8 for everyone else. */
-static inline void render_rgb8(struct color c, uint8_t out[3])
-{
-	c = render_clamp(c);
-	out[0] = render_channel(c.r);
-	out[1] = render_channel(c.g);
-	out[2] = render_channel(c.b);
-}
-
 void render_color_to_rgb8(struct color c, uint8_t out[3])
 {
 	render_rgb8(c, out);

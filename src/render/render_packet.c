@@ -170,7 +170,7 @@ void render_block_packets(const struct render_job *job, struct image *img, int x
 			counts->primary += (uint64_t)n;
 			for (y = 0; y < rows_n; y++)
 				for (x = px; x < px + cols; x++)
-					render_color_to_rgb8(c[i++], bytes[y] + x * 3);
+					render_rgb8(c[i++], bytes[y] + x * 3);
 		}
 		/* A row's bytes go out at once, as render_block's. */
 		for (y = 0; y < rows_n; y++)

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdbool.h>
+#include <stdint.h>
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
 #include <emmintrin.h>
 #endif
@@ -54,6 +55,28 @@ static inline double render_clamp01(double v)
 static inline struct color render_clamp(struct color c)
 {
 	return color_make(render_clamp01(c.r), render_clamp01(c.g), render_clamp01(c.b));
+}
+
+/* lround(255 c) for c in [0, 1], without the library call or a
+ * comparison: with v = 255 c = i + f (i whole, f in [0, 1)), v + v is
+ * exact and its whole part is 2 i + (f >= 1/2), so adding 1 and halving
+ * gives i + (f >= 1/2), which rounds half away from zero as lround does.
+ * (NaN was made 0 by the clamp, as lround's result cast to a byte would
+ * be.) */
+static inline uint8_t render_channel(double c)
+{
+	double v = 255.0 * c;
+
+	return (uint8_t)(((int)(v + v) + 1) >> 1);
+}
+
+/* render_color_to_rgb8, inline for the block loops. */
+static inline void render_rgb8(struct color c, uint8_t out[3])
+{
+	c = render_clamp(c);
+	out[0] = render_channel(c.r);
+	out[1] = render_channel(c.g);
+	out[2] = render_channel(c.b);
 }
 
 /* The refracted direction of unit d through a surface of unit normal n
