@@ -66,7 +66,7 @@ static void render_block(const struct render_job *job, struct image *img, long b
 	int x, y;
 
 	if (job->samples > 1) {
-		render_block_samples(job, img, tx0, ty0, tx1, ty1, counts);
+		render_block_samples(job, img, tx0, ty0, tx1, ty1, packets, counts);
 		return;
 	}
 	if (packets) {

@@ -142,6 +142,16 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 	}
 }
 
+void render_rays_packets(const struct render_job *job, const struct ray *r, int n,
+			 struct ray_counts *counts, struct color *out)
+{
+	int i;
+
+	for (i = 0; i < n; i += ACCEL_PACKET)
+		shade_packet(job, r + i, n - i < ACCEL_PACKET ? n - i : ACCEL_PACKET, 1, counts,
+			     out + i);
+}
+
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, struct ray_counts *counts)
 {

@@ -15,5 +15,10 @@ bool render_packets_wanted(const struct accel *a);
  * through each centre, as render_image.c's loop does, to the byte. */
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, struct ray_counts *counts);
+/* out[i] = render_trace(job's scene and settings, r[i], level 1), for
+ * rays r[0..n) (any n, best neighbours), traced ACCEL_PACKET at a time;
+ * counts all but the primary rays, as render_trace does. */
+void render_rays_packets(const struct render_job *job, const struct ray *r, int n,
+			 struct ray_counts *counts, struct color *out);
 
 #endif

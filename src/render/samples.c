@@ -7,14 +7,47 @@
  * mean is rounded to 8 bits once.  So the pixel is the box average of the
  * N-times-larger image to within its rounding (one level), and it does not
  * depend on which thread or tile renders it. */
+#include "accel/accel.h"
+#include "render/render_packet.h"
 #include "render/samples.h"
+
+/* The samples of a row of pixels, in their order (pixel by pixel, each
+ * pixel's in order), traced ACCEL_PACKET at a time (a pixel's samples,
+ * or a few pixels', lie close together), each pixel's sum kept in the
+ * same order as one ray at a time: the same bytes. */
+static void samples_row_packets(const struct render_job *job, int x0, int x1, int y,
+				const double *offset, struct ray_counts *counts, uint8_t *row)
+{
+	const int n = job->samples, nn = n * n;
+	const double inv_nn = 1.0 / ((double)n * n);
+	struct color sum[SAMPLES_ROW_MAX], c[ACCEL_PACKET];
+	struct ray r[ACCEL_PACKET];
+	int owner[ACCEL_PACKET], m = 0, x, k, i;
+
+	for (x = x0; x < x1; x++)
+		sum[x - x0] = color_make(0.0, 0.0, 0.0);
+	for (x = x0; x < x1; x++)
+		for (k = 0; k < nn; k++) {
+			r[m] = camera_ray_at(job->camera, x + offset[k % n], y + offset[k / n]);
+			owner[m++] = x - x0;
+			counts->primary++;
+			if (m < ACCEL_PACKET && !(x == x1 - 1 && k == nn - 1))
+				continue;
+			render_rays_packets(job, r, m, counts, c);
+			for (i = 0; i < m; i++)
+				sum[owner[i]] = color_add(sum[owner[i]], color_clamp(c[i]));
+			m = 0;
+		}
+	for (x = x0; x < x1; x++)
+		render_color_to_rgb8(color_scale(sum[x - x0], inv_nn), row + (size_t)(x - x0) * 3);
+}
 
 /* The sample positions are made once per block (offsets within a pixel),
  * and each sample's ray is made before the previous one is traced, so
  * that its square root and division run beside that trace, as
  * render_block does for one ray a pixel. */
 void render_block_samples(const struct render_job *job, struct image *img, int x0, int y0,
-			  int x1, int y1, struct ray_counts *counts)
+			  int x1, int y1, bool packets, struct ray_counts *counts)
 {
 	const int n = job->samples, nn = n * n;
 	const double inv_nn = 1.0 / ((double)n * n);
@@ -25,6 +58,11 @@ void render_block_samples(const struct render_job *job, struct image *img, int x
 		offset[k] = (k + 0.5) / n;
 	for (y = y0; y < y1; y++) {
 		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
+		if (packets && x1 - x0 <= SAMPLES_ROW_MAX) {
+			samples_row_packets(job, x0, x1, y, offset, counts,
+					    row + (size_t)(x0 - job->x0) * 3);
+			continue;
+		}
 		for (x = x0; x < x1; x++) {
 			struct color sum = color_make(0.0, 0.0, 0.0);
 			struct ray next = camera_ray_at(job->camera, x + offset[0], y + offset[0]);

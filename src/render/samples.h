@@ -2,11 +2,15 @@
 #ifndef RT_RENDER_SAMPLES_H
 #define RT_RENDER_SAMPLES_H
 
+#include <stdbool.h>
+
 #include "whitted/render.h"
 
 /* Renders the pixels [x0, x1) x [y0, y1) of the full image into img (whose
  * top left pixel is the job's (x0, y0)) with job->samples^2 rays each. */
 void render_block_samples(const struct render_job *job, struct image *img, int x0, int y0,
-			  int x1, int y1, struct ray_counts *counts);
+			  int x1, int y1, bool packets, struct ray_counts *counts);
+/* The widest row of pixels whose samples go in packets. */
+#define SAMPLES_ROW_MAX 64
 
 #endif

@@ -3,8 +3,11 @@
  * render_trace of those rays); the sub-pixel rays are the pixel-centre rays
  * of the camera N times larger (camera_ray_at against camera_ray); 0 and 1
  * are one ray a pixel, bit for bit; the image is the same for any thread
- * count and region; N*N primary rays a pixel are counted. */
+ * count and region, and with the samples traced in packets or one by one
+ * (the same ray counts too); N*N primary rays a pixel are counted. */
+#define _POSIX_C_SOURCE 200809L	/* setenv */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "course_scene.h"
@@ -152,6 +155,42 @@ static void test_samples_threads_and_regions(void **state)
 	scene_destroy(s);
 }
 
+/* WHITTED_PACKETS=1 and 0: the samples of a row in packets, and one ray
+ * at a time; N from 2 (a packet holds four pixels' samples) to 5 (a
+ * pixel's 25 samples span two packets), both clamps, a block edge inside
+ * the region. */
+static void test_samples_packets_same_as_single_rays(void **state)
+{
+	struct scene *s = course();
+	struct camera_params cp;
+	struct camera cam;
+	struct diag d;
+	int n, clamp;
+
+	(void)state;
+	camera_params_default(&cp);
+	assert_int_equal(camera_init(&cam, &cp, 41, &d), 0);
+	for (n = 2; n <= 5; n++)
+		for (clamp = 0; clamp < 2; clamp++) {
+			enum clamp_mode mode = clamp ? RT_CLAMP_FINAL : RT_CLAMP_LEVEL;
+			struct ray_counts c1, c0;
+			struct image one, other;
+
+			assert_int_equal(setenv("WHITTED_PACKETS", "1", 1), 0);
+			render(s, &cam, n, 2, 3, 5, 38, 30, mode, &one, &c1);
+			assert_int_equal(setenv("WHITTED_PACKETS", "0", 1), 0);
+			render(s, &cam, n, 2, 3, 5, 38, 30, mode, &other, &c0);
+			assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
+			assert_memory_equal(one.pixels, other.pixels, (size_t)35 * 25 * 3);
+			assert_true(c1.primary == c0.primary && c1.shadow == c0.shadow &&
+				    c1.reflection == c0.reflection);
+			assert_true(c1.primary == (uint64_t)35 * 25 * (uint64_t)(n * n));
+			image_free(&one);
+			image_free(&other);
+		}
+	scene_destroy(s);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -159,6 +198,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_samples_are_the_big_image_centres),
 		cmocka_unit_test(test_samples_one_is_the_default),
 		cmocka_unit_test(test_samples_threads_and_regions),
+		cmocka_unit_test(test_samples_packets_same_as_single_rays),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }
