@@ -40,10 +40,10 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 			       const double *t_min, const double *t_max);
 /* accel_occluded_packet for the rays of p's lanes in `active` (bits
  * below ACCEL_PACKET), left where they are: the mask of those blocked.
- * Every lane below ACCEL_PACKET is filled (one not active with any ray:
- * the copy of another, say), as the tests may read whole runs of them;
- * for shadow rays made a vector at a time (render_shadow_packets), which
- * then need no gathering into single rays and back. */
+ * The lanes not active may hold anything (even no ray: NaN): the walks
+ * give the shapes copies of an active one there.  For shadow rays made a
+ * vector at a time (render_shadow_packets), which then need no gathering
+ * into single rays and back. */
 uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
 			      const double *t_min, const double *t_max);
 /* Whether packets are faster than single rays here: where the walks have

@@ -19,9 +19,14 @@
  * onto the plane, and an end at +-inf stays there.  The bound needs every
  * distance finite in float: box coordinates and the origin's of at most
  * ACCEL_COORD_MAX (1e30) and |inv| of at most 2^24 make |b - o| |inv| at
- * most 3.4e37, and t_min must be at most 1e37.  Other rays (float_box_ray
- * false: a far origin, a direction nearly but not quite parallel to an
- * axis, a NaN, a t_min below 0) are tested in doubles, as the other walks
+ * most 3.4e37, and t_min must be at most 1e37.  Relative errors need
+ * normal floats: below 2^-126 a rounding is off by up to 2^-150 however
+ * small the value (an origin's coordinate, t_min, a product), so e is at
+ * least 2^-100 (whose widening is far below any distance the renderer
+ * meets: its t_min is at least 1e-6), and |d| is at most 2^64, so that
+ * inv stays a normal float.  Other rays (float_box_ray false: a far
+ * origin, a direction nearly but not quite parallel to an axis or too
+ * long, a NaN, a t_min below 0) are tested in doubles, as the other walks
  * test them, to the bit.  tests/unit/accel/test_accel_float_box.c holds
  * the bound to random boxes and rays. */
 #ifndef RT_ACCEL_FLOAT_BOX_H
@@ -36,6 +41,8 @@
 #define FLOAT_BOX_REL 0x1p-21f		/* 8u */
 #define FLOAT_BOX_ABS 0x1p-22		/* 4u */
 #define FLOAT_BOX_DIR_MIN 0x1p-24	/* |inv| at most 2^24 */
+#define FLOAT_BOX_DIR_MAX 0x1p64	/* inv a normal float */
+#define FLOAT_BOX_ERR_MIN 0x1p-100	/* e's floor, over the subnormals' rounding */
 #define FLOAT_BOX_T_MIN_MAX 1e37
 
 /* Whether the float tests can bound ray r from t_min on. */
@@ -48,7 +55,7 @@ static inline bool float_box_ray(const struct ray *r, double t_min)
 	if (!(t_min >= 0.0 && t_min <= FLOAT_BOX_T_MIN_MAX))
 		return false;
 	for (k = 0; k < 3; k++)
-		if (!(fabs(o[k]) <= ACCEL_COORD_MAX) ||
+		if (!(fabs(o[k]) <= ACCEL_COORD_MAX) || !(fabs(d[k]) <= FLOAT_BOX_DIR_MAX) ||
 		    !(d[k] == 0.0 || fabs(d[k]) >= FLOAT_BOX_DIR_MIN))
 			return false;
 	return true;
@@ -64,7 +71,8 @@ static inline double float_box_err(const double o[3], const double inv[3])
 	for (k = 0; k < 3; k++)
 		if (inv[k] != INFINITY && inv[k] != -INFINITY && fabs(o[k] * inv[k]) > e)
 			e = fabs(o[k] * inv[k]);
-	return e * FLOAT_BOX_ABS * (1.0 + 0x1p-20);
+	e = e * FLOAT_BOX_ABS * (1.0 + 0x1p-20);
+	return e > FLOAT_BOX_ERR_MIN ? e : FLOAT_BOX_ERR_MIN;
 }
 
 #endif

@@ -9,10 +9,11 @@
  * RAYS_WALK(name), the names the walks get.  Each lane does the single
  * walk's arithmetic on the same float boxes (accel.c: entry = max(t_min,
  * the near plane's t), exit = min(t_max, the far plane's t), a NaN
- * constraining nothing), and a shape is tested for the lanes that enter
- * its leaf against their best so far with the keys' tie rule: so each
- * ray's answer is its single walk's to the bit.  Nothing here allocates
- * or locks. */
+ * constraining nothing), or in AVX-512 the float tests that enter every
+ * box it enters, no later (accel_float_box.h), and a shape is tested for
+ * the lanes that enter its leaf against their best so far with the keys'
+ * tie rule: so each ray's answer is its single walk's to the bit.
+ * Nothing here allocates or locks. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -96,6 +97,7 @@ static inline bool RAYS_WALK(floats_hold)(const struct packet_rays *v, uint32_t 
 				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(dk)));
 
 			m &= _mm512_cmp_pd_mask(ao, _mm512_set1_pd(ACCEL_COORD_MAX), _CMP_LE_OQ);
+			m &= _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MAX), _CMP_LE_OQ);
 			m &= _mm512_cmp_pd_mask(dk, zero, _CMP_EQ_OQ) |
 			     _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MIN), _CMP_GE_OQ);
 		}
@@ -131,6 +133,7 @@ static inline void RAYS_WALK(prepare_floats)(struct packet_rays *v)
 	}
 	e = _mm512_mul_ps(_mm512_mul_ps(e, _mm512_set1_ps((float)FLOAT_BOX_ABS)),
 			  _mm512_set1_ps(1.0f + 0x1p-20f));
+	e = _mm512_max_ps(e, _mm512_set1_ps((float)FLOAT_BOX_ERR_MIN));
 	_mm512_storeu_ps(v->errf, e);
 	_mm512_storeu_ps(v->t_minf, rays_floats16(v->s.t_min));
 }
@@ -404,17 +407,25 @@ static uint32_t RAYS_WALK(occluded_lanes)(const struct accel *a, const struct ra
 					  uint32_t active, const double *t_min,
 					  const double *t_max)
 {
+	const double *from[8] = { p->ox, p->oy, p->oz, p->dx, p->dy, p->dz, t_min, t_max };
 	struct packet_rays v;
-	double t_far[LANES];
+	double t_far[LANES], *to[8];
+	int first, j, k;
 
-	memcpy(v.s.p.ox, p->ox, sizeof(double) * LANES);
-	memcpy(v.s.p.oy, p->oy, sizeof(double) * LANES);
-	memcpy(v.s.p.oz, p->oz, sizeof(double) * LANES);
-	memcpy(v.s.p.dx, p->dx, sizeof(double) * LANES);
-	memcpy(v.s.p.dy, p->dy, sizeof(double) * LANES);
-	memcpy(v.s.p.dz, p->dz, sizeof(double) * LANES);
-	memcpy(v.s.t_min, t_min, sizeof(v.s.t_min));
-	memcpy(t_far, t_max, sizeof(t_far));
+	if (!active)
+		return 0;
+	/* The lanes not traced become copies of the first one traced, as
+	 * the shapes' packet methods may read them (whitted/shape.h): the
+	 * caller's may hold no ray at all (a light at its point). */
+	first = __builtin_ctz(active);
+	to[0] = v.s.p.ox, to[1] = v.s.p.oy, to[2] = v.s.p.oz;
+	to[3] = v.s.p.dx, to[4] = v.s.p.dy, to[5] = v.s.p.dz;
+	to[6] = v.s.t_min, to[7] = t_far;
+	for (k = 0; k < 8; k++) {
+		const lv copy = lv_set1(from[k][first]);
+		for (j = 0; j < LANES; j += LANES_W)
+			lv_store(to[k] + j, lv_sel(lm_from_bits(active >> j), lv_load(from[k] + j), copy));
+	}
 	RAYS_WALK(prepare)(&v, active);
 	return RAYS_WALK(occluded_rays)(a, &v, active, t_far);
 }

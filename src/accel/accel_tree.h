@@ -164,9 +164,11 @@ size_t accel_collapse_room(size_t leaves, int width);
 bool accel_walk_usable(enum accel_walk w);
 
 /* The walks with AVX2 box tests over eight-child nodes
- * (accel_walk_avx2.c) and with AVX-512 ones (accel_walk_avx512.c): the
- * same boxes with the same arithmetic, lane by lane, as the base walks,
- * so the same hits.  Called only where accel_walk_usable says so. */
+ * (accel_walk_avx2.c: the same boxes with the same arithmetic, lane by
+ * lane, as the base walks) and with AVX-512 ones (accel_walk_avx512.c: in
+ * floats, entering every box the double tests enter, no later:
+ * accel_float_box.h), so the same hits.  Called only where
+ * accel_walk_usable says so. */
 const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
 					 double t_min, double *t_max);
 bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max);
@@ -184,7 +186,8 @@ void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, i
 uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
 				      const double *t_min, const double *t_max);
 bool accel_avx512_compiled(void);
-/* For the tests: node's children as the AVX-512 walk's float test sees
+#ifdef RT_TEST_HOOKS
+/* For the tests (in the test build only): node's children as the AVX-512 walk's float test sees
  * them for ray r in (t_min, t_max) (its mask, the entries in
  * float_entry), or -1 where that walk tests the ray in doubles; and as
  * the double test sees them (*exact_mask, exact_entry; 0 where this file
@@ -202,6 +205,7 @@ int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray 
 				 const double *t_min, const double *t_max, uint32_t float_child[4],
 				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
 				 double exact_entry[4][ACCEL_PACKET]);
+#endif
 
 /* The packets through a four-child tree, a ray a vector lane
  * (accel_packet_rays.h): in SSE2 or plain C (accel_packet_rays.c), AVX2

@@ -236,6 +236,7 @@ static uint32_t walk_avx512_occluded_packet(const struct accel *a, const struct 
 		       : walk_avx512_exact_occluded_packet(a, r, n, t_min, t_max);
 }
 
+#ifdef RT_TEST_HOOKS
 int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
 			    double t_max, double float_entry[8], int *exact_mask,
 			    double exact_entry[8])
@@ -255,10 +256,13 @@ int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, d
 	return mask;
 }
 
+#endif
+
 #define ACCEL_WALK(name) walk_avx512_##name
 #define RAYS_WALK(name) rays_avx512_##name
 #include "accel/accel_packet_rays.h"
 
+#ifdef RT_TEST_HOOKS
 int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
 				 const double *t_min, const double *t_max, uint32_t float_child[4],
 				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
@@ -278,8 +282,10 @@ int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray 
 	return 1;
 }
 
+#endif
+
 #define ACCEL_COMPILED 1
-#else
+#elif defined(RT_TEST_HOOKS)
 int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
 			    double t_max, double float_entry[8], int *exact_mask,
 			    double exact_entry[8])

@@ -29,7 +29,7 @@ bool render_packets_wanted(const struct accel *a)
 
 /* Packets go down this many levels of reflection where a packet's rays
  * need not agree (accel_packets_scatter_pay); deeper ones are traced ray
- * by ray by the shading (a level's frame is about 10 KB of stack, which
+ * by ray by the shading (a level's frame is about 12 KB of stack, which
  * the workers have: base/thread.h). */
 #define PACKET_DEPTH 8
 

@@ -42,10 +42,10 @@ static void samples_row_packets(const struct render_job *job, int x0, int x1, in
 		render_color_to_rgb8(color_scale(sum[x - x0], inv_nn), row + (size_t)(x - x0) * 3);
 }
 
-/* The sample positions are made once per block (offsets within a pixel),
- * and each sample's ray is made before the previous one is traced, so
- * that its square root and division run beside that trace, as
- * render_block does for one ray a pixel. */
+/* The sample positions are made once per block (offsets within a pixel);
+ * one ray at a time, each sample's ray is made before the previous one
+ * is traced, so that its square root and division run beside that
+ * trace, as render_block does for one ray a pixel. */
 void render_block_samples(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, bool packets, struct ray_counts *counts)
 {

@@ -68,6 +68,8 @@ static double origin_coord(const struct bvh8_node *n, int k, double s)
 	int c = (int)(support_rng() * 8) % 8;
 	double plane = support_rng() < 0.5 ? n->lo[k][c] : n->hi[k][c];
 
+	if (kind < 0.04)	/* below the floats' normal range */
+		return support_uniform(-3000.0, 3000.0) * 0x1p-149;
 	if (!isfinite(plane) || kind < 0.4)
 		return support_uniform(-2.0 * s, 2.0 * s);
 	if (kind < 0.7)
@@ -121,6 +123,8 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 		t_max = support_rng() < 0.3 ? INFINITY : t_min + support_uniform(0.0, 4.0 * s);
 		if (support_rng() < 0.05)
 			t_max = 1e300;
+		if (support_rng() < 0.03)
+			t_min = support_rng() * 0x1p-130;
 		fmask = accel_avx512_node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
 		if (xmask && support_rng() < 0.3) {
 			/* Again with t_max at an entry the double test found:
@@ -247,12 +251,47 @@ static void test_float_box_tests_of_packets_enter_every_box_the_double_test_ente
 	assert_true(entered > packets);
 }
 
+/* A ray from an origin below the floats' normal range (its rounding off
+ * by an absolute 2^-150, not a relative u), which once missed a box the
+ * double test entered (from the review of the float tests). */
+static void test_float_box_tests_origins_below_the_normal_floats(void **state)
+{
+	struct bvh8_node n;
+	struct ray r;
+	double fe[8], xe[8];
+	int xmask, fmask, c, k;
+
+	(void)state;
+	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX-512 here: the float box tests cannot run\n");
+		skip();
+	}
+	memset(&n, 0, sizeof(n));
+	for (c = 0; c < 8; c++) {
+		n.slot[c] = 1;
+		for (k = 0; k < 3; k++) {
+			n.lo[k][c] = INFINITY;
+			n.hi[k][c] = -INFINITY;
+		}
+	}
+	n.lo[0][0] = 0, n.hi[0][0] = 1;
+	n.lo[1][0] = -1, n.hi[1][0] = 0;
+	n.lo[2][0] = -1, n.hi[2][0] = 1;
+	r.origin = vec3_make(-1000.51 * 0x1p-149, -2001.02 * 1.0000001 * 0x1p-149, 0.0);
+	r.dir = vec3_make(0x1p-24, 0x1p-23, 1.0);
+	fmask = accel_avx512_node_tests(&n, &r, 0.0, INFINITY, fe, &xmask, xe);
+	assert_int_equal(xmask & 1, 1);
+	assert_true(fmask < 0 || ((fmask & 1) && fe[0] <= xe[0]));
+}
+
 /* The rays the bound cannot hold go to the double test. */
 static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **state)
 {
-	static const struct vec3 origins[] = { { 2e30, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-	static const struct vec3 dirs[] = { { 1, 0, 0 }, { 1e-9, 1, 0 }, { NAN, 1, 0 }, { 0, 1, 0 } };
-	static const double t_mins[] = { 0.0, 0.0, 0.0, -1.0 };
+	static const struct vec3 origins[] = { { 2e30, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 },
+					       { 0, 0, 0 } };
+	static const struct vec3 dirs[] = { { 1, 0, 0 }, { 1e-9, 1, 0 }, { NAN, 1, 0 }, { 0, 1, 0 },
+					    { 0x1p70, 1, 0 } };
+	static const double t_mins[] = { 0.0, 0.0, 0.0, -1.0, 0.0 };
 	struct bvh8_node n;
 	double fe[8], xe[8];
 	int xmask, i;
@@ -264,7 +303,7 @@ static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **
 	}
 	support_rng_seed(7);
 	random_node(&n, 1.0);
-	for (i = 0; i < 4; i++) {
+	for (i = 0; i < 5; i++) {
 		struct ray r;
 
 		r.origin = origins[i];
@@ -278,6 +317,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_float_box_tests_enter_every_box_the_double_test_enters),
 		cmocka_unit_test(test_float_box_tests_leave_rays_they_cannot_bound_to_doubles),
+		cmocka_unit_test(test_float_box_tests_origins_below_the_normal_floats),
 		cmocka_unit_test(test_float_box_tests_of_packets_enter_every_box_the_double_test_enters),
 	};
 

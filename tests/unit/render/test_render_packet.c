@@ -166,7 +166,12 @@ static void test_render_packet_forced_on_a_small_tree(void **state)
  * limit and beyond (recursion 12), glass (whose reflections the shading
  * traces itself) and mirrors of every kind: the image and the ray counts
  * of one ray at a time. */
-static void test_render_packet_small_tree_reflections(void **state)
+/* The course scene, 40 mirrors and some glass over it at recursion 12,
+ * with `extra` more point lights (past RENDER_SHADOW_KEPT, the packets'
+ * shading a hit a lane stands aside) and with `spot` a spotlight: the
+ * packets' image and ray counts are single rays', in every set of
+ * instructions the small tree's packets go in. */
+static void check_small_tree(int extra, bool spot)
 {
 	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.6, 20, 0.0, 1.0 };
 	static const struct material glass = { { 0.9, 1, 0.9 }, 0.1, 0.3, 0.4, 0.2, 30, 0.7, 1.5 };
@@ -178,7 +183,6 @@ static void test_render_packet_small_tree_reflections(void **state)
 	size_t k;
 	int i, tested = 0;
 
-	(void)state;
 	rng_state = 0x9876543u;
 	for (i = 0; i < 40; i++) {
 		struct vec3 c = vec3_make(uniform(-50, 50), uniform(-30, 50), uniform(2, 50));
@@ -188,6 +192,21 @@ static void test_render_packet_small_tree_reflections(void **state)
 						     vec3_add(c, vec3_make(uniform(-9, 9), uniform(-9, 9), 0)), m);
 		assert_non_null(sh);
 		assert_int_equal(scene_add_shape(s, sh, &d), 0);
+	}
+	for (i = 0; i < extra; i++)
+		assert_int_equal(scene_add_light(s, vec3_make(uniform(-90, 90), uniform(-90, 90), uniform(20, 90)),
+						 color_make(0.2, 0.15, 0.1), &d),
+				 0);
+	if (spot) {
+		struct light l;
+
+		memset(&l, 0, sizeof(l));
+		l.pos = vec3_make(-20, -50, 80);
+		l.color = color_make(0.5, 0.5, 0.6);
+		l.spot = true;
+		l.axis = vec3_make(0.1, 0.5, -1);
+		l.cutoff_deg = 30;
+		assert_int_equal(scene_add_light_full(s, &l, &d), 0);
 	}
 	assert_int_equal(scene_set_recursion(s, 12, &d), 0);
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
@@ -214,6 +233,19 @@ static void test_render_packet_small_tree_reflections(void **state)
 	scene_destroy(s);
 }
 
+static void test_render_packet_small_tree_reflections(void **state)
+{
+	(void)state;
+	check_small_tree(0, false);
+}
+
+static void test_render_packet_small_tree_many_lights_and_a_spot(void **state)
+{
+	(void)state;
+	check_small_tree(5, false);	/* nine lights */
+	check_small_tree(0, true);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -221,6 +253,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
 		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
 		cmocka_unit_test(test_render_packet_small_tree_reflections),
+		cmocka_unit_test(test_render_packet_small_tree_many_lights_and_a_spot),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }
