@@ -184,6 +184,15 @@ signal_test HUP 129 no
 rm -rf "$T/sig" && mkdir -p "$T/sig"
 (cd "$T/sig" && exec nohup "$W" -s 6000 -r 8 -o big.png "$SCENE") >/dev/null 2>&1 &
 pid=$!
+# The hang-up must come once nohup has made it ignored, that is once
+# whitted runs in its place: a loaded machine once took longer than a
+# fixed 0.3 s to get there (and the signal killed nohup).
+w_exe=$(readlink -f "$W")
+for _ in $(seq 100); do
+	[ "$(readlink "/proc/$pid/exe" 2>/dev/null)" = "$w_exe" ] && break
+	[ -d /proc/$pid ] || break
+	sleep 0.05
+done
 sleep 0.3
 kill -s HUP $pid
 sent=$?
