@@ -222,6 +222,7 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 					 uint32_t child[4])
 {
 	const lv zero = lv_set1(0.0);
+	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
 	int j, k, c;
 
 	for (c = 0; c < 4; c++)
@@ -235,7 +236,7 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 		tn = lv_load(v->s.t_min + j);
 		tx = lv_load(t_max + j);
 		for (k = 0; k < 3; k++) {
-			o[k] = lv_load((k == 0 ? v->s.p.ox : k == 1 ? v->s.p.oy : v->s.p.oz) + j);
+			o[k] = lv_load(o_of[k] + j);
 			inv[k] = lv_load(v->inv[k] + j);
 			far_first[k] = lv_lt(inv[k], zero);
 		}
