@@ -84,7 +84,7 @@
 #include "shape.h"
 #include "vec3.h"
 
-#define WHITTED_PLUGIN_ABI 4
+#define WHITTED_PLUGIN_ABI 5
 
 /* Defines the symbol the host checks first; write it once in the plugin's
  * file, at file scope. */

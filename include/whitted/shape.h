@@ -115,6 +115,22 @@ struct shape_ops {
 	 * are ignored.  NULL: intersect, ray by ray. */
 	uint32_t (*intersect_packet)(const struct shape *s, const struct ray_packet *p,
 				     uint32_t active, const double *t_min, double *t_max);
+	/* Optional (ABI 5).  normal at each point i whose bit i is set in
+	 * `active` (i < RT_PACKET_MAX), the point (p[0][i], p[1][i], p[2][i])
+	 * and its normal into (n[0][i], n[1][i], n[2][i]): each normal's to
+	 * the bit, as intersect_packet's answers are intersect's.  The method
+	 * may read and write every lane of a run of RT_PACKET_RUN that holds
+	 * an active one (the host's arrays hold whole runs; the others hold
+	 * finite points, maybe of other surfaces, and what is written there is
+	 * dropped).  NULL:
+	 * normal, point by point. */
+	void (*normal_packet)(const struct shape *s, const double *const p[3], uint32_t active,
+			      double *const n[3]);
+	/* Optional (ABI 5), and only beside color_at: color_at likewise, the
+	 * red, green and blue of point i into (c[0][i], c[1][i], c[2][i]).
+	 * NULL: color_at, point by point. */
+	void (*color_packet)(const struct shape *s, const double *const p[3], uint32_t active,
+			     double *const c[3]);
 };
 
 struct shape {
@@ -155,11 +171,53 @@ static inline struct vec3 shape_normal(const struct shape *s, struct vec3 p)
 	return s->ops->normal(s, p);
 }
 
+/* See normal_packet. */
+static inline void shape_normal_packet(const struct shape *s, const double *const p[3],
+				       uint32_t active, double *const n[3])
+{
+	int i;
+
+	if (s->ops->normal_packet) {
+		s->ops->normal_packet(s, p, active, n);
+		return;
+	}
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		struct vec3 v;
+		if (!(active >> i & 1))
+			continue;
+		v = s->ops->normal(s, vec3_make(p[0][i], p[1][i], p[2][i]));
+		n[0][i] = v.x;
+		n[1][i] = v.y;
+		n[2][i] = v.z;
+	}
+}
+
 /* Inline, as it runs at every hit; the default for a NULL color_at is
  * still written only here. */
 static inline struct color shape_color_at(const struct shape *s, struct vec3 p)
 {
 	return s->ops->color_at ? s->ops->color_at(s, p) : s->mat.color;
+}
+
+/* See color_packet: the material colour where the shape has no color_at. */
+static inline void shape_color_packet(const struct shape *s, const double *const p[3],
+				      uint32_t active, double *const c[3])
+{
+	int i;
+
+	if (s->ops->color_at && s->ops->color_packet) {
+		s->ops->color_packet(s, p, active, c);
+		return;
+	}
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		struct color v;
+		if (!(active >> i & 1))
+			continue;
+		v = shape_color_at(s, vec3_make(p[0][i], p[1][i], p[2][i]));
+		c[0][i] = v.r;
+		c[1][i] = v.g;
+		c[2][i] = v.b;
+	}
 }
 
 /* See specular_color_at: false (and *out untouched) for the usual shape. */

@@ -26,6 +26,10 @@ static inline lv lv_sub(lv a, lv b) { return _mm512_sub_pd(a, b); }
 static inline lv lv_mul(lv a, lv b) { return _mm512_mul_pd(a, b); }
 static inline lv lv_div(lv a, lv b) { return _mm512_div_pd(a, b); }
 static inline lv lv_sqrt(lv a) { return _mm512_sqrt_pd(a); }
+static inline lv lv_floor(lv a)
+{
+	return _mm512_roundscale_pd(a, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
 /* a > b ? a : b and a < b ? a : b (b for a NaN): what max and min do */
 static inline lv lv_max_first(lv a, lv b) { return _mm512_max_pd(a, b); }
 static inline lv lv_min_first(lv a, lv b) { return _mm512_min_pd(a, b); }
@@ -74,6 +78,7 @@ static inline lv lv_sub(lv a, lv b) { return _mm256_sub_pd(a, b); }
 static inline lv lv_mul(lv a, lv b) { return _mm256_mul_pd(a, b); }
 static inline lv lv_div(lv a, lv b) { return _mm256_div_pd(a, b); }
 static inline lv lv_sqrt(lv a) { return _mm256_sqrt_pd(a); }
+static inline lv lv_floor(lv a) { return _mm256_floor_pd(a); }
 /* a > b ? a : b and a < b ? a : b (b for a NaN): what max and min do */
 static inline lv lv_max_first(lv a, lv b) { return _mm256_max_pd(a, b); }
 static inline lv lv_min_first(lv a, lv b) { return _mm256_min_pd(a, b); }
@@ -101,6 +106,7 @@ static inline lv lv_andnot_bits(lv a, lv b) { return _mm256_andnot_pd(a, b); }
 static inline lv lv_or_bits(lv a, lv b) { return _mm256_or_pd(a, b); }
 #elif defined(__SSE2__) && !defined(ACCEL_PORTABLE)
 #include <emmintrin.h>
+#include <math.h>
 
 #define LANES_W 2
 typedef __m128d lv;
@@ -114,6 +120,14 @@ static inline lv lv_sub(lv a, lv b) { return _mm_sub_pd(a, b); }
 static inline lv lv_mul(lv a, lv b) { return _mm_mul_pd(a, b); }
 static inline lv lv_div(lv a, lv b) { return _mm_div_pd(a, b); }
 static inline lv lv_sqrt(lv a) { return _mm_sqrt_pd(a); }
+/* SSE2 has no rounding instruction: floor, lane by lane. */
+static inline lv lv_floor(lv a)
+{
+	double v[2];
+
+	_mm_storeu_pd(v, a);
+	return _mm_set_pd(floor(v[1]), floor(v[0]));
+}
 /* a > b ? a : b and a < b ? a : b (b for a NaN): what max and min do */
 static inline lv lv_max_first(lv a, lv b) { return _mm_max_pd(a, b); }
 static inline lv lv_min_first(lv a, lv b) { return _mm_min_pd(a, b); }
@@ -152,6 +166,7 @@ static inline lv lv_sub(lv a, lv b) { return a - b; }
 static inline lv lv_mul(lv a, lv b) { return a * b; }
 static inline lv lv_div(lv a, lv b) { return a / b; }
 static inline lv lv_sqrt(lv a) { return sqrt(a); }
+static inline lv lv_floor(lv a) { return floor(a); }
 static inline lv lv_max_first(lv a, lv b) { return a > b ? a : b; }
 static inline lv lv_min_first(lv a, lv b) { return a < b ? a : b; }
 static inline lm lv_lt(lv a, lv b) { return a < b; }

@@ -14,6 +14,7 @@
 
 #include "accel/accel.h"
 #include "render/camera_span.h"
+#include "render/hit_lanes.h"
 #include "render/render_packet.h"
 #include "render/shade_lanes.h"
 #include "render/shade_hit.h"
@@ -33,50 +34,48 @@ bool render_packets_wanted(const struct accel *a)
  * the workers have: base/thread.h). */
 #define PACKET_DEPTH 8
 
-/* The hits among `hits` that shade_lanes shades as render_shade_point
+/* The hits among h's that shade_lanes shades as render_shade_point
  * would (shade_lanes.h: point lights only, all of whose shadow answers
  * the packet has; no highlight colour of a texture; no glass; a mirror's
  * reflection seen already, slot[i] of seen), with what it needs of them
  * in *sum; the other lanes are filled too, as the vectors read them. */
-static uint32_t lean_lanes(const struct render_job *job, const struct render_point *h,
-			   uint32_t hits, const int *slot, const struct color *seen, int level,
+static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes *h,
+			   const int *slot, const struct color *seen, int level,
 			   struct shade_lanes *sum)
 {
 	const struct scene *sc = job->scene;
 	bool deeper = level < job->settings.recursion;
-	uint32_t lean = 0;
-	int i;
+	uint32_t hits = h->hits, lean = 0;
+	int i, k;
 
 	if (!hits || sc->n_special_lights || sc->n_lights > RENDER_SHADOW_KEPT)
 		return 0;
 	sum->reflects = 0;
 	sum->clamp = job->settings.clamp == RT_CLAMP_LEVEL;
 	for (i = 0; i < SHADE_LANES; i++) {
-		const struct render_point *q = &h[hits >> i & 1 ? i : __builtin_ctz(hits)];
-		const struct material *m = &q->hit->mat;
-		struct color s = slot[i] >= 0 && hits >> i & 1 ? seen[slot[i]] : q->base;
+		const struct material *m = &h->hit[i]->mat;
+		int q = hits >> i & 1 ? i : __builtin_ctz(hits);
+		bool reflected = slot[i] >= 0 && hits >> i & 1;
 
-		if (hits >> i & 1 && !q->spec && !(m->kt > 0.0) &&
+		if (hits >> i & 1 && !(h->spec >> i & 1) && !(m->kt > 0.0) &&
 		    (slot[i] >= 0 || !(deeper && m->kr > 0.0))) {
 			lean |= (uint32_t)1 << i;
 			sum->reflects |= (uint32_t)(slot[i] >= 0) << i;
 		}
-		sum->base[0][i] = q->base.r;
-		sum->base[1][i] = q->base.g;
-		sum->base[2][i] = q->base.b;
 		sum->ka[i] = m->ka;
 		sum->kd[i] = m->kd;
 		sum->ks[i] = m->ks;
 		sum->kr[i] = m->kr;
 		sum->shininess[i] = m->shininess;
-		sum->refl[0][i] = q->refl.x;
-		sum->refl[1][i] = q->refl.y;
-		sum->refl[2][i] = q->refl.z;
-		sum->eps[i] = q->eps;
-		sum->seen[0][i] = s.r;
-		sum->seen[1][i] = s.g;
-		sum->seen[2][i] = s.b;
+		sum->seen[0][i] = reflected ? seen[slot[i]].r : h->base[0][q];
+		sum->seen[1][i] = reflected ? seen[slot[i]].g : h->base[1][q];
+		sum->seen[2][i] = reflected ? seen[slot[i]].b : h->base[2][q];
 	}
+	for (k = 0; k < 3; k++) {
+		memcpy(sum->base[k], h->base[k], sizeof(sum->base[k]));
+		memcpy(sum->refl[k], h->refl[k], sizeof(sum->refl[k]));
+	}
+	memcpy(sum->eps, h->pts.eps, sizeof(sum->eps));
 	sum->lanes = lean;
 	return lean;
 }
@@ -92,36 +91,38 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
 	const struct shape *hit[ACCEL_PACKET];
-	struct render_point h[ACCEL_PACKET];
+	struct hit_lanes h;
 	struct render_shadows shadows;
 	struct ray bounce[ACCEL_PACKET];
 	struct color seen[ACCEL_PACKET];
 	int slot[ACCEL_PACKET], nb = 0, i;
-	uint32_t hits = 0, lean;
+	uint32_t lean, m;
 	struct shade_lanes sum;
 
-	for (i = n; i < ACCEL_PACKET; i++)
+	for (i = 0; i < ACCEL_PACKET; i++)
 		slot[i] = -1;
 	for (i = 0; i < n; i++) {
 		t_min[i] = render_offset(r[i].origin);
 		t[i] = INFINITY;
 	}
 	accel_intersect_packet(sc->accel, r, n, t_min, t, hit);
-	for (i = 0; i < n; i++) {
-		slot[i] = -1;
-		if (!hit[i])
-			continue;
-		render_point_at(&r[i], t[i], hit[i], &h[i]);
-		hits |= (uint32_t)1 << i;
-		if (level < depth && render_reflects(&job->settings, &h[i], level)) {
-			render_bounce(&h[i], &bounce[nb]);
+	hit_lanes_fill(r, n, t, hit, &h);
+	if (level < depth)
+		for (m = h.hits; m; m &= m - 1) {
+			i = __builtin_ctz(m);
+			if (!render_reflects(&job->settings, h.hit[i], level))
+				continue;
+			/* render_bounce */
+			bounce[nb].origin = vec3_add_scaled(
+				vec3_make(h.pts.px[i], h.pts.py[i], h.pts.pz[i]),
+				vec3_make(h.refl[0][i], h.refl[1][i], h.refl[2][i]), h.pts.eps[i]);
+			bounce[nb].dir = vec3_make(h.refl[0][i], h.refl[1][i], h.refl[2][i]);
 			slot[i] = nb++;
 		}
-	}
-	render_shadow_packets(sc, h, hits, &shadows);
+	render_shadow_packets(sc, &h.pts, h.hits, &shadows);
 	if (nb > 0)
 		shade_packet(job, bounce, nb, level + 1, counts, seen);
-	lean = lean_lanes(job, h, hits, slot, seen, level, &sum);
+	lean = lean_lanes(job, &h, slot, seen, level, &sum);
 	if (lean) {
 		double c[3][SHADE_LANES];
 
@@ -132,13 +133,17 @@ static void shade_packet(const struct render_job *job, const struct ray *r, int 
 				out[i] = color_make(c[0][i], c[1][i], c[2][i]);
 	}
 	for (i = 0; i < n; i++) {
+		struct render_point q;
+
 		if (lean >> i & 1)
 			continue;
 		out[i] = color_make(0.0, 0.0, 0.0);
+		if (!(h.hits >> i & 1))
+			continue;
 		shadows.bit = i;
-		if (hit[i])
-			out[i] = render_shade_point(sc, &job->settings, &r[i], &h[i], level, counts,
-						    &shadows, slot[i] >= 0 ? &seen[slot[i]] : NULL);
+		hit_lanes_point(&h, i, &q);
+		out[i] = render_shade_point(sc, &job->settings, &r[i], &q, level, counts, &shadows,
+					    slot[i] >= 0 ? &seen[slot[i]] : NULL);
 	}
 }
 

@@ -95,27 +95,14 @@ static inline bool render_blocked(const struct scene *s, const struct render_sha
 	return render_shadowed(s, p, l, dist, eps);
 }
 
-void render_shadow_packets(const struct scene *s, const struct render_point *h, uint32_t mask,
-			   struct render_shadows *out)
+void render_shadow_packets(const struct scene *s, const struct light_dirs_points *pts,
+			   uint32_t mask, struct render_shadows *out)
 {
 	size_t nl = s->n_lights < RENDER_SHADOW_LIGHTS ? s->n_lights : RENDER_SHADOW_LIGHTS, j;
-	struct light_dirs_points pts;
 	struct light_rays rays;
-	int i;
 
 	if (!mask)
 		return;
-	/* The points a lane each (the others a copy of the first). */
-	for (i = 0; i < LIGHT_DIRS_LANES; i++) {
-		const struct render_point *q = &h[mask >> i & 1 ? i : __builtin_ctz(mask)];
-		pts.px[i] = q->p.x;
-		pts.py[i] = q->p.y;
-		pts.pz[i] = q->p.z;
-		pts.nx[i] = q->n.x;
-		pts.ny[i] = q->n.y;
-		pts.nz[i] = q->n.z;
-		pts.eps[i] = q->eps;
-	}
 	for (j = 0; j < nl; j++) {
 		const struct light *lt = &s->lights[j];
 		struct light_dirs own, *dirs = j < RENDER_SHADOW_KEPT ? &out->dirs[j] : &own;
@@ -123,7 +110,7 @@ void render_shadow_packets(const struct scene *s, const struct render_point *h, 
 
 		/* The rays render_direct (or render_direct_full) makes, by the
 		 * same arithmetic, and only where it makes one. */
-		asks = light_dirs(&pts, lt->pos, dirs, &rays) & mask;
+		asks = light_dirs(pts, lt->pos, dirs, &rays) & mask;
 		if (lt->spot)
 			for (m = asks; m; m &= m - 1) {
 				int b = __builtin_ctz(m);

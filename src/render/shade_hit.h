@@ -43,11 +43,11 @@ struct render_shadows {
 /* The point of ray r at t on hit (not NULL). */
 void render_point_at(const struct ray *r, double t, const struct shape *hit,
 		     struct render_point *h);
-/* Traces, in packets, the shadow rays that shading points h[b] (those of
- * bits `mask`, at most ACCEL_PACKET of them) will ask for, and fills in
- * *out. */
-void render_shadow_packets(const struct scene *s, const struct render_point *h, uint32_t mask,
-			   struct render_shadows *out);
+/* Traces, in packets, the shadow rays that the shading points of pts'
+ * lanes `mask` (at most ACCEL_PACKET of them; every lane filled) will ask
+ * for, and fills in *out. */
+void render_shadow_packets(const struct scene *s, const struct light_dirs_points *pts,
+			   uint32_t mask, struct render_shadows *out);
 /* The reflection of the ray that met point h, as the shading makes it. */
 static inline void render_bounce(const struct render_point *h, struct ray *out)
 {
@@ -55,14 +55,14 @@ static inline void render_bounce(const struct render_point *h, struct ray *out)
 	out->dir = h->refl;
 }
 
-/* Whether the shading of point h at `level` traces a reflection that
+/* Whether the shading of a point on `hit` at `level` traces a reflection that
  * render_shade_point can take from its caller: a mirror that is not glass
  * (glass's reflection depends on the glass stack and total internal
  * reflection, and is traced by the shading itself). */
-static inline bool render_reflects(const struct render_settings *rs, const struct render_point *h,
+static inline bool render_reflects(const struct render_settings *rs, const struct shape *hit,
 				   int level)
 {
-	return level < rs->recursion && h->hit->mat.kr > 0.0 && !(h->hit->mat.kt > 0.0);
+	return level < rs->recursion && hit->mat.kr > 0.0 && !(hit->mat.kt > 0.0);
 }
 
 /* The colour render_trace gives ray r at `level` (outside any glass)

@@ -156,6 +156,51 @@ static struct color floor_color_at(const struct shape *s, struct vec3 p)
 	return floor_cell_color(i, j);
 }
 
+static void floor_normal_packet(const struct shape *s, const double *const p[3],
+				uint32_t active, double *const n[3])
+{
+	int i;
+
+	(void)s;
+	(void)p;
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		if (!(active >> i & 1))
+			continue;
+		n[0][i] = 0.0;
+		n[1][i] = 0.0;
+		n[2][i] = 1.0;
+	}
+}
+
+/* The plain checkerboard a vector at a time (solve_packet_floor_cells);
+ * a textured one point by point. */
+static void floor_cells_packet(const struct shape *s, const double *const p[3],
+			       uint32_t active, int shifted, double *const c[3])
+{
+	const struct floor *fl = (const struct floor *)s;
+	int i;
+
+	if (!fl->tex_path[0] && !fl->tex_path[1]) {
+		solve_packet_floor_cells(p, active, shifted, fl->half, fl->cell, c);
+		return;
+	}
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		struct color v;
+		if (!(active >> i & 1))
+			continue;
+		v = s->ops->color_at(s, vec3_make(p[0][i], p[1][i], p[2][i]));
+		c[0][i] = v.r;
+		c[1][i] = v.g;
+		c[2][i] = v.b;
+	}
+}
+
+static void floor_color_packet(const struct shape *s, const double *const p[3],
+			       uint32_t active, double *const c[3])
+{
+	floor_cells_packet(s, p, active, 1, c);
+}
+
 static bool floor_bounds(const struct shape *s, struct aabb *out)
 {
 	const struct floor *fl = (const struct floor *)s;
@@ -349,9 +394,11 @@ const struct shape_ops floor_ops = {
 	.intersect = floor_intersect,
 	.intersect_packet = floor_intersect_packet,
 	.normal = floor_normal,
+	.normal_packet = floor_normal_packet,
 	.export_pov = floor_export_pov,
 	.destroy = floor_destroy,
 	.color_at = floor_color_at,
+	.color_packet = floor_color_packet,
 	.specular_color_at = floor_specular_color_at,
 	.bounds = floor_bounds,
 	.tessellate = floor_tessellate,
@@ -380,6 +427,12 @@ static struct color floor_infinite_color_at(const struct shape *s, struct vec3 p
 	if (fl->tex_path[0] || fl->tex_path[1])
 		return floor_cell_color_at(fl, p.x / fl->cell, p.y / fl->cell);
 	return floor_cell_color(floor(p.x / fl->cell), floor(p.y / fl->cell));
+}
+
+static void floor_infinite_color_packet(const struct shape *s, const double *const p[3],
+					uint32_t active, double *const c[3])
+{
+	floor_cells_packet(s, p, active, 0, c);
 }
 
 /* Unbounded in x and y, and flat: z = 0 is the one axis it is bounded
@@ -424,9 +477,11 @@ static const struct shape_ops floor_infinite_ops = {
 	.intersect = floor_infinite_intersect,
 	.intersect_packet = floor_infinite_intersect_packet,
 	.normal = floor_normal,
+	.normal_packet = floor_normal_packet,
 	.export_pov = floor_infinite_export_pov,
 	.destroy = floor_destroy,
 	.color_at = floor_infinite_color_at,
+	.color_packet = floor_infinite_color_packet,
 	.specular_color_at = floor_specular_color_at,
 	.bounds = floor_infinite_bounds,
 	.tessellate = floor_infinite_tessellate,

@@ -8,7 +8,8 @@
 #include "shapes/solve_packet_lanes.h"
 
 const struct solve_packet_set solve_packet_base = {
-	SOLVE_LANES(sphere), SOLVE_LANES(triangle), SOLVE_LANES(floor)
+	SOLVE_LANES(sphere), SOLVE_LANES(triangle), SOLVE_LANES(floor), SOLVE_LANES(floor_cells),
+	SOLVE_LANES(sphere_normal)
 };
 
 static const struct solve_packet_set *chosen(void)
@@ -44,4 +45,16 @@ uint32_t solve_packet_floor(const struct ray_packet *p, uint32_t active, int bou
 			    double half, const double *t_min, double *t_max)
 {
 	return chosen()->floor(p, active, bounded, half, t_min, t_max);
+}
+
+void solve_packet_floor_cells(const double *const p[3], uint32_t active, int shifted,
+			      double half, double cell, double *const c[3])
+{
+	chosen()->floor_cells(p, active, shifted, half, cell, c);
+}
+
+void solve_packet_sphere_normal(const double *const p[3], uint32_t active, struct vec3 centre,
+				double inv_radius, double *const n[3])
+{
+	chosen()->sphere_normal(p, active, centre, inv_radius, n);
 }

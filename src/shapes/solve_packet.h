@@ -20,6 +20,16 @@ uint32_t solve_packet_triangle(const struct ray_packet *p, uint32_t active, stru
 uint32_t solve_packet_floor(const struct ray_packet *p, uint32_t active, int bounded,
 			    double half, const double *t_min, double *t_max);
 
+/* The colours of floor.c's untextured checkerboard at the points of
+ * `active` (shifted: the square's cells, from -half; else the infinite
+ * plane's, from 0), and the sphere's normals: each lane's value the
+ * scalar method's to the bit (whitted/shape.h's color_packet and
+ * normal_packet contract). */
+void solve_packet_floor_cells(const double *const p[3], uint32_t active, int shifted,
+			      double half, double cell, double *const c[3]);
+void solve_packet_sphere_normal(const double *const p[3], uint32_t active, struct vec3 centre,
+				double inv_radius, double *const n[3]);
+
 /* One set of instructions' solvers (solve_packet_lanes.h); all NULL in a
  * file compiled without them. */
 struct solve_packet_set {
@@ -29,6 +39,10 @@ struct solve_packet_set {
 			     struct vec3 e1, struct vec3 e2, const double *t_min, double *t_max);
 	uint32_t (*floor)(const struct ray_packet *p, uint32_t active, int bounded, double half,
 			  const double *t_min, double *t_max);
+	void (*floor_cells)(const double *const p[3], uint32_t active, int shifted, double half,
+			    double cell, double *const c[3]);
+	void (*sphere_normal)(const double *const p[3], uint32_t active, struct vec3 centre,
+			      double inv_radius, double *const n[3]);
 };
 
 extern const struct solve_packet_set solve_packet_base, solve_packet_avx2, solve_packet_avx512;

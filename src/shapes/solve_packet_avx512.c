@@ -8,8 +8,9 @@
 #include "shapes/solve_packet_lanes.h"
 
 const struct solve_packet_set solve_packet_avx512 = {
-	SOLVE_LANES(sphere), SOLVE_LANES(triangle), SOLVE_LANES(floor)
+	SOLVE_LANES(sphere), SOLVE_LANES(triangle), SOLVE_LANES(floor), SOLVE_LANES(floor_cells),
+	SOLVE_LANES(sphere_normal)
 };
 #else
-const struct solve_packet_set solve_packet_avx512 = { 0, 0, 0 };
+const struct solve_packet_set solve_packet_avx512 = { 0, 0, 0, 0, 0 };
 #endif

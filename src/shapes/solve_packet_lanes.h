@@ -6,6 +6,7 @@
  * the same way; so each ray's answer is the single-ray solver's to the
  * bit.  Lanes go LANES_W at a time through the runs that hold an active
  * ray (whitted/shape.h's intersect_packet contract). */
+#include <math.h>
 #include <stdint.h>
 
 #include "base/lanes.h"
@@ -125,4 +126,50 @@ static uint32_t SOLVE_LANES(floor)(const struct ray_packet *p, uint32_t active, 
 		mask |= group_store(t_max, active, j, in, t);
 	}
 	return mask;
+}
+
+/* floor.c's floor_cell_color of cells (floor(cx), floor(cy)), cx = (x +
+ * half) / cell where shifted (the square), x / cell otherwise (the
+ * infinite plane), and likewise cy: white (1) where i + j is even, black
+ * (0) otherwise, into each channel.  h = |i + j| / 2 is a whole number
+ * (and finite) exactly when the sum is even: below 2^31, where
+ * floor_cell_color takes the sum's low bit, the sum is a whole number
+ * held exactly, so the two agree; beyond, it is floor_cell_color's own
+ * test. */
+static void SOLVE_LANES(floor_cells)(const double *const p[3], uint32_t active, int shifted,
+				     double half, double cell, double *const c[3])
+{
+	const lv hv = lv_set1(half), cv = lv_set1(cell), inf = lv_set1(INFINITY);
+	const lv one = lv_set1(1.0), zero = lv_set1(0.0);
+	int j;
+
+	FOR_GROUPS(active, j) {
+		lv x = lv_load(p[0] + j), y = lv_load(p[1] + j), i, k, h, white;
+
+		if (shifted) {
+			x = lv_add(x, hv);
+			y = lv_add(y, hv);
+		}
+		i = lv_floor(lv_div(x, cv));
+		k = lv_floor(lv_div(y, cv));
+		h = lv_mul(lv_set1(0.5), lv_andnot_bits(lv_set1(-0.0), lv_add(i, k)));
+		white = lv_sel(lm_and(lv_eq(h, lv_floor(h)), lv_ne(h, inf)), one, zero);
+		lv_store(c[0] + j, white);
+		lv_store(c[1] + j, white);
+		lv_store(c[2] + j, white);
+	}
+}
+
+/* sphere.c's normal: (p - centre) inv_radius. */
+static void SOLVE_LANES(sphere_normal)(const double *const p[3], uint32_t active,
+				       struct vec3 centre, double inv_radius, double *const n[3])
+{
+	const lv s = lv_set1(inv_radius);
+	int j;
+
+	FOR_GROUPS(active, j) {
+		lv_store(n[0] + j, lv_mul(lv_sub(lv_load(p[0] + j), lv_set1(centre.x)), s));
+		lv_store(n[1] + j, lv_mul(lv_sub(lv_load(p[1] + j), lv_set1(centre.y)), s));
+		lv_store(n[2] + j, lv_mul(lv_sub(lv_load(p[2] + j), lv_set1(centre.z)), s));
+	}
 }

@@ -44,6 +44,14 @@ static struct vec3 sphere_normal(const struct shape *s, struct vec3 p)
 	return vec3_scale(vec3_sub(p, sp->centre), sp->inv_radius);
 }
 
+static void sphere_normal_packet(const struct shape *s, const double *const p[3],
+				 uint32_t active, double *const n[3])
+{
+	const struct sphere *sp = (const struct sphere *)s;
+
+	solve_packet_sphere_normal(p, active, sp->centre, sp->inv_radius, n);
+}
+
 static bool sphere_bounds(const struct shape *s, struct aabb *out)
 {
 	const struct sphere *sp = (const struct sphere *)s;
@@ -130,6 +138,7 @@ const struct shape_ops sphere_ops = {
 	.intersect = sphere_intersect,
 	.intersect_packet = sphere_intersect_packet,
 	.normal = sphere_normal,
+	.normal_packet = sphere_normal_packet,
 	.export_pov = sphere_export_pov,
 	.destroy = sphere_destroy,
 	.bounds = sphere_bounds,

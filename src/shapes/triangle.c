@@ -52,6 +52,23 @@ static struct vec3 triangle_normal(const struct shape *s, struct vec3 p)
 	return triangle_unit_normal((const struct triangle *)s);
 }
 
+/* One normal for every point: worked out once, the same value each time. */
+static void triangle_normal_packet(const struct shape *s, const double *const p[3],
+				   uint32_t active, double *const n[3])
+{
+	struct vec3 v = triangle_unit_normal((const struct triangle *)s);
+	int i;
+
+	(void)p;
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		if (!(active >> i & 1))
+			continue;
+		n[0][i] = v.x;
+		n[1][i] = v.y;
+		n[2][i] = v.z;
+	}
+}
+
 static bool triangle_bounds(const struct shape *s, struct aabb *out)
 {
 	const struct triangle *tr = (const struct triangle *)s;
@@ -123,6 +140,7 @@ const struct shape_ops triangle_ops = {
 	.intersect = triangle_intersect,
 	.intersect_packet = triangle_intersect_packet,
 	.normal = triangle_normal,
+	.normal_packet = triangle_normal_packet,
 	.export_pov = triangle_export_pov,
 	.destroy = triangle_destroy,
 	.bounds = triangle_bounds,

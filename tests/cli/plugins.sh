@@ -33,7 +33,7 @@ done
 build() { "$CC" -std=c99 -Wall -Wextra -Werror -I"$ROOT/include" -fPIC -shared -o "$@"; }
 build bad_abi.so "$ROOT/tests/plugins/bad_abi.c" &&
 	build old_abi.so -DBAD_ABI=1 "$ROOT/tests/plugins/bad_abi.c" &&
-	build old2_abi.so -DBAD_ABI=3 "$ROOT/tests/plugins/bad_abi.c" &&
+	build old2_abi.so -DBAD_ABI=4 "$ROOT/tests/plugins/bad_abi.c" &&
 	build no_entry.so "$ROOT/tests/plugins/no_entry.c" &&
 	build init_fails.so "$ROOT/tests/plugins/init_fails.c" &&
 	build clash_sphere.so -DCLASH_KEYWORD='"sphere"' "$ROOT/tests/plugins/clash.c" &&
@@ -75,11 +75,11 @@ for tool in whitted scene2pov whitted-view; do
 		"${run[@]}" --plugin text.so torus.txt
 	expect_fail "$tool no entry" "plugin no_entry.so: not a whitted plugin (it defines no whitted_plugin_abi" \
 		"${run[@]}" --plugin no_entry.so torus.txt
-	expect_fail "$tool abi" "plugin bad_abi.so: built for plugin ABI version 99, but this whitted supports version 4 only" \
+	expect_fail "$tool abi" "plugin bad_abi.so: built for plugin ABI version 99, but this whitted supports version 5 only" \
 		"${run[@]}" --plugin bad_abi.so torus.txt
-	expect_fail "$tool older abi" "plugin old_abi.so: built for plugin ABI version 1, but this whitted supports version 4 only" \
+	expect_fail "$tool older abi" "plugin old_abi.so: built for plugin ABI version 1, but this whitted supports version 5 only" \
 		"${run[@]}" --plugin old_abi.so torus.txt
-	expect_fail "$tool abi 3" "plugin old2_abi.so: built for plugin ABI version 3, but this whitted supports version 4 only" \
+	expect_fail "$tool abi 4" "plugin old2_abi.so: built for plugin ABI version 4, but this whitted supports version 5 only" \
 		"${run[@]}" --plugin old2_abi.so torus.txt
 	expect_fail "$tool clash built-in" "plugin clash_sphere.so: shape keyword 'sphere' is already defined by whitted (built in)" \
 		"${run[@]}" --plugin clash_sphere.so torus.txt

@@ -27,10 +27,11 @@ struct abi_pin {
 #define PIN_AT(type, member, n) { "offsetof(" #type ", " #member ")", offsetof(type, member), n }
 #define PIN_VALUE(expr, n) { #expr, (size_t)(expr), n }
 
-/* ABI 4 on LP64 (ABI 3 was this with intersect_packet taking an array
- * of struct ray, and without struct ray_packet and RT_PACKET_RUN; ABI 2
- * without struct shape_ops' intersect_packet at its end). */
-static const struct abi_pin abi_4[] = {
+/* ABI 5 on LP64 (ABI 4 was this without struct shape_ops' normal_packet
+ * and color_packet at its end; ABI 3 also had intersect_packet taking an
+ * array of struct ray, and no struct ray_packet and RT_PACKET_RUN; ABI 2
+ * no intersect_packet). */
+static const struct abi_pin abi_5[] = {
 	PIN_SIZE(struct vec3, 24),
 	PIN_AT(struct vec3, x, 0), PIN_AT(struct vec3, y, 8), PIN_AT(struct vec3, z, 16),
 	PIN_SIZE(struct color, 24),
@@ -46,7 +47,7 @@ static const struct abi_pin abi_4[] = {
 	PIN_AT(struct material, kt, 64), PIN_AT(struct material, ior, 72),
 	PIN_SIZE(struct shape, 88),
 	PIN_AT(struct shape, ops, 0), PIN_AT(struct shape, mat, 8),
-	PIN_SIZE(struct shape_ops, 112),
+	PIN_SIZE(struct shape_ops, 128),
 	PIN_AT(struct shape_ops, keyword, 0), PIN_AT(struct shape_ops, dialects, 8),
 	PIN_AT(struct shape_ops, parse, 16), PIN_AT(struct shape_ops, intersect, 24),
 	PIN_AT(struct shape_ops, normal, 32), PIN_AT(struct shape_ops, export_pov, 40),
@@ -55,6 +56,7 @@ static const struct abi_pin abi_4[] = {
 	PIN_AT(struct shape_ops, tessellate, 80),
 	PIN_AT(struct shape_ops, specular_color_at, 88), PIN_AT(struct shape_ops, closed, 96),
 	PIN_AT(struct shape_ops, intersect_packet, 104),
+	PIN_AT(struct shape_ops, normal_packet, 112), PIN_AT(struct shape_ops, color_packet, 120),
 	PIN_VALUE(RT_PACKET_MAX, 32),
 	PIN_VALUE(RT_PACKET_RUN, 8),
 	PIN_SIZE(struct ray_packet, 6 * 32 * 8),
@@ -112,7 +114,7 @@ static const struct {
 	const struct abi_pin *pins;
 	size_t n;
 } tables[] = {
-	{ 4, abi_4, sizeof(abi_4) / sizeof(abi_4[0]) },
+	{ 5, abi_5, sizeof(abi_5) / sizeof(abi_5[0]) },
 };
 
 static void test_abi_layout_is_pinned(void **state)

@@ -6,15 +6,20 @@
  * and t_max, rays through a triangle's edges and corners and in its
  * plane, degenerate triangles, rays on the floor's edges and parallel to
  * it, and directions with -0, infinite and NaN components. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "base/simd.h"
 #include "shapes/shapes.h"
 #include "shapes/solve.h"
 #include "shapes/solve_packet.h"
 #include "support.h"
+#include "whitted/image.h"
 
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
@@ -410,6 +415,190 @@ static void test_solve_packet_shape_methods(void **state)
 	}
 }
 
+/* A point for the cell and normal tests: anywhere, on a cell's edge
+ * (a multiple of the cell, then shifted as the square's cells are), huge
+ * (cells past 2^31, sums past 2^53), -0, infinite or NaN now and then. */
+static double odd_coordinate(double half, double cell)
+{
+	double u = support_rng();
+
+	if (u < 0.25)
+		return floor(support_uniform(-60, 60)) * cell - half;
+	if (u < 0.3)
+		return -0.0;
+	if (u < 0.4)
+		return support_uniform(-1, 1) * ldexp(1.0, (int)support_uniform(30, 70)) * cell;
+	if (u < 0.42)
+		return support_rng() < 0.5 ? INFINITY : -INFINITY;
+	if (u < 0.43)
+		return NAN;
+	return support_uniform(-600, 600);
+}
+
+static bool same_bits(double a, double b)
+{
+	return memcmp(&a, &b, sizeof(a)) == 0;
+}
+
+/* Fills the lanes of `active`'s runs of p with points; the others NaN, so
+ * that a method reading outside the runs it may read shows. */
+static void random_points(double p[3][RT_PACKET_MAX], uint32_t active, double half, double cell,
+			  bool finite)
+{
+	int i, k;
+
+	for (i = 0; i < RT_PACKET_MAX; i++)
+		for (k = 0; k < 3; k++) {
+			double v = odd_coordinate(half, cell);
+			/* A texel's place is not defined past the finite (floor.c
+			 * is never asked there: hit points are finite). */
+			while (finite && !(fabs(v) < 1e15))
+				v = odd_coordinate(half, cell);
+			p[k][i] = active >> (i / RT_PACKET_RUN * RT_PACKET_RUN) & 0xffu
+					  ? (k == 2 ? 0.0 : v)
+					  : NAN;
+		}
+}
+
+/* The checkerboard's colours of every set against floor.c's color_at
+ * (the square and the infinite plane), to the bit. */
+static void test_solve_packet_floor_cells(void **state)
+{
+	const struct solve_packet_set *sets[3];
+	const char *names[3];
+	int n_sets = usable_sets(sets, names), k, i, j, ch;
+
+	(void)state;
+	support_rng_seed(43);
+	for (k = 0; k < 4000; k++) {
+		double cell = k % 3 == 0 ? 20 : k % 3 == 1 ? 30 : support_uniform(0.01, 100);
+		double width = k % 2 ? 1000 : INFINITY, half = width / 2;
+		struct shape *fl = floor_create_view(width, cell, &mat);
+		double p[3][RT_PACKET_MAX], c[3][RT_PACKET_MAX];
+		const double *const pv[3] = { p[0], p[1], p[2] };
+		double *const cv[3] = { c[0], c[1], c[2] };
+		uint32_t active = random_mask();
+
+		assert_non_null(fl);
+		random_points(p, active, k % 2 ? half : 0.0, cell, false);
+		for (j = 0; j <= n_sets; j++) {
+			for (i = 0; i < RT_PACKET_MAX; i++)
+				c[0][i] = c[1][i] = c[2][i] = -1.0;
+			/* Each set's kernel, then the floor's own method. */
+			if (j < n_sets)
+				sets[j]->floor_cells(pv, active, k % 2, half, cell, cv);
+			else
+				shape_color_packet(fl, pv, active, cv);
+			for (i = 0; i < RT_PACKET_MAX; i++) {
+				struct color want;
+				if (!(active >> i & 1))
+					continue;
+				want = shape_color_at(fl, vec3_make(p[0][i], p[1][i], p[2][i]));
+				for (ch = 0; ch < 3; ch++)
+					if (!same_bits(c[ch][i], ch == 0 ? want.r : ch == 1 ? want.g : want.b)) {
+						print_error("floor cells (%s, width %g, cell %.17g), lane %d at (%.17g, %.17g): %.17g, color_at %.17g\n",
+							    j < n_sets ? names[j] : "method", width, cell, i,
+							    p[0][i], p[1][i], c[ch][i], want.r);
+						fail();
+					}
+			}
+		}
+		shape_destroy(fl);
+	}
+}
+
+/* The normals of the sphere (every set's kernel and its method), the
+ * triangle and the floor against their normal methods, to the bit, and
+ * a textured floor's colours against its color_at; lanes outside the
+ * mask's runs are never written. */
+static void test_solve_packet_normal_methods(void **state)
+{
+	const struct solve_packet_set *sets[3];
+	const char *names[3];
+	int n_sets = usable_sets(sets, names), k, i, j, ch, m;
+	struct shape *shapes[5];
+	char path[] = "/tmp/whitted-cells-XXXXXX";
+	struct image img;
+	struct diag d;
+	int fd;
+
+	(void)state;
+	/* A 3 x 2 texture of distinct texels. */
+	fd = mkstemp(path);
+	assert_true(fd >= 0);
+	close(fd);
+	assert_int_equal(image_alloc(&img, 3, 2, &d), 0);
+	for (i = 0; i < 18; i++)
+		img.pixels[i] = (uint8_t)(i * 14 + 3);
+	assert_int_equal(image_write(&img, path, RT_FORMAT_PNG, NULL, &d), 0);
+	image_free(&img);
+	shapes[0] = sphere_create(vec3_make(1, -2, 3), 4.5, &mat);
+	shapes[1] = triangle_create(vec3_make(-3, 0, 0), vec3_make(3, 1, 0), vec3_make(0, 4, 2), &mat);
+	shapes[2] = floor_create_view(1000, 20, &mat);
+	shapes[3] = floor_create_view(INFINITY, 7, &mat);
+	shapes[4] = floor_create_view(1000, 20, &mat);
+	for (m = 0; m < 5; m++)
+		assert_non_null(shapes[m]);
+	assert_int_equal(floor_set_textures(shapes[4], path, path, &d), 0);
+	unlink(path);
+	support_rng_seed(47);
+	for (k = 0; k < 2000; k++) {
+		double p[3][RT_PACKET_MAX], n[3][RT_PACKET_MAX], c[3][RT_PACKET_MAX];
+		const double *const pv[3] = { p[0], p[1], p[2] };
+		double *const nv[3] = { n[0], n[1], n[2] };
+		double *const cv[3] = { c[0], c[1], c[2] };
+		uint32_t active = random_mask(), runs = 0;
+
+		m = k % 5;
+		random_points(p, active, 0.0, 20, m == 4);
+		for (i = 0; i < RT_PACKET_MAX; i++)
+			if (active >> (i / RT_PACKET_RUN * RT_PACKET_RUN) & 0xffu)
+				runs |= (uint32_t)1 << i;
+		if (m == 0)
+			for (i = 0; i < RT_PACKET_MAX; i++)
+				if (runs >> i & 1)
+					p[2][i] = support_uniform(-5, 9);
+		for (j = 0; j <= (m == 0 ? n_sets : 0); j++) {
+			for (i = 0; i < RT_PACKET_MAX; i++)
+				for (ch = 0; ch < 3; ch++)
+					n[ch][i] = c[ch][i] = -7.0;
+			if (m == 0 && j < n_sets)
+				sets[j]->sphere_normal(pv, active, vec3_make(1, -2, 3), 1.0 / 4.5, nv);
+			else
+				shape_normal_packet(shapes[m], pv, active, nv);
+			shape_color_packet(shapes[m], pv, active, cv);
+			for (i = 0; i < RT_PACKET_MAX; i++) {
+				struct vec3 want;
+				struct color col;
+				if (!(runs >> i & 1)) {
+					for (ch = 0; ch < 3; ch++)
+						if (n[ch][i] != -7.0 || c[ch][i] != -7.0) {
+							print_error("%s: lane %d, outside the mask's runs, written\n",
+								    shapes[m]->ops->keyword, i);
+							fail();
+						}
+					continue;
+				}
+				if (!(active >> i & 1))
+					continue;
+				want = shape_normal(shapes[m], vec3_make(p[0][i], p[1][i], p[2][i]));
+				col = shape_color_at(shapes[m], vec3_make(p[0][i], p[1][i], p[2][i]));
+				if (!same_bits(n[0][i], want.x) || !same_bits(n[1][i], want.y) ||
+				    !same_bits(n[2][i], want.z) || !same_bits(c[0][i], col.r) ||
+				    !same_bits(c[1][i], col.g) || !same_bits(c[2][i], col.b)) {
+					print_error("%s #%d (%s), lane %d at (%.17g %.17g %.17g): n (%.17g %.17g %.17g) / (%.17g %.17g %.17g), c %.17g / %.17g\n",
+						    shapes[m]->ops->keyword, m, m == 0 && j < n_sets ? names[j] : "method",
+						    i, p[0][i], p[1][i], p[2][i], n[0][i], n[1][i], n[2][i], want.x,
+						    want.y, want.z, c[0][i], col.r);
+					fail();
+				}
+			}
+		}
+	}
+	for (m = 0; m < 5; m++)
+		shape_destroy(shapes[m]);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -417,6 +606,8 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_solve_packet_triangle),
 		cmocka_unit_test(test_solve_packet_floor),
 		cmocka_unit_test(test_solve_packet_shape_methods),
+		cmocka_unit_test(test_solve_packet_floor_cells),
+		cmocka_unit_test(test_solve_packet_normal_methods),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }

@@ -1,0 +1,116 @@
+/* hit_lanes (hit_lanes.h): the points, the shapes' normals and colours a
+ * call a shape of the packet, then the shared part in the widest
+ * instructions the processor has (hit_lanes_avx2.c, hit_lanes_avx512.c;
+ * the baseline's here). */
+#include "base/simd.h"
+#include "render/hit_lanes.h"
+
+#define HIT_LANES_FN(name) hit_lanes_base_##name
+#include "render/hit_lanes_lanes.h"
+
+hit_lanes_turn_fn *const hit_lanes_turn_base = HIT_LANES_FN(turn);
+
+static hit_lanes_turn_fn *turn_chosen(void)
+{
+	switch (rt_simd_level()) {
+	case RT_SIMD_AVX512:
+		if (hit_lanes_turn_avx512)
+			return hit_lanes_turn_avx512;
+		/* fall through */
+	case RT_SIMD_AVX2:
+		if (hit_lanes_turn_avx2)
+			return hit_lanes_turn_avx2;
+		/* fall through */
+	default:
+		return hit_lanes_turn_base;
+	}
+}
+
+void hit_lanes_fill(const struct ray *r, int n, const double *t, const struct shape *const *hit,
+		    struct hit_lanes *out)
+{
+	struct light_dirs_points *p = &out->pts;
+	double *const nv[3] = { p->nx, p->ny, p->nz };
+	double *const cv[3] = { out->base[0], out->base[1], out->base[2] };
+	const double *const pc[3] = { p->px, p->py, p->pz };
+	double d[3][HIT_LANES];
+	uint32_t left;
+	int i, first;
+
+	out->hits = 0;
+	out->spec = 0;
+	for (i = 0; i < n; i++)
+		if (hit[i])
+			out->hits |= (uint32_t)1 << i;
+	if (!out->hits)
+		return;
+	first = __builtin_ctz(out->hits);
+	for (i = 0; i < HIT_LANES; i++) {
+		int k = out->hits >> i & 1 ? i : first;
+		/* ray_at */
+		struct vec3 at = ray_at(&r[k], t[k]);
+
+		out->hit[i] = hit[k];
+		out->t[i] = t[k];
+		p->px[i] = at.x;
+		p->py[i] = at.y;
+		p->pz[i] = at.z;
+		d[0][i] = r[k].dir.x;
+		d[1][i] = r[k].dir.y;
+		d[2][i] = r[k].dir.z;
+	}
+	/* Each shape once, for its lanes; the lanes not hit take the first
+	 * one's shape, so that every lane's values are made. */
+	for (left = ((uint32_t)1 << HIT_LANES) - 1; left;) {
+		const struct shape *s = out->hit[__builtin_ctz(left)];
+		uint32_t same = 0, m;
+
+		for (m = left; m; m &= m - 1)
+			if (out->hit[__builtin_ctz(m)] == s)
+				same |= (uint32_t)1 << __builtin_ctz(m);
+		left &= ~same;
+		if (same == ((uint32_t)1 << HIT_LANES) - 1) {
+			shape_normal_packet(s, pc, same, nv);
+			shape_color_packet(s, pc, same, cv);
+		} else {
+			/* The methods may write whole runs: into room of their
+			 * own, of which this shape's lanes are kept. */
+			double n_own[3][HIT_LANES], c_own[3][HIT_LANES];
+			double *const nw[3] = { n_own[0], n_own[1], n_own[2] };
+			double *const cw[3] = { c_own[0], c_own[1], c_own[2] };
+			int k;
+
+			shape_normal_packet(s, pc, same, nw);
+			shape_color_packet(s, pc, same, cw);
+			for (m = same; m; m &= m - 1)
+				for (k = 0; k < 3; k++) {
+					nv[k][__builtin_ctz(m)] = n_own[k][__builtin_ctz(m)];
+					cv[k][__builtin_ctz(m)] = c_own[k][__builtin_ctz(m)];
+				}
+		}
+		if (s->ops->specular_color_at)
+			for (m = same & out->hits; m; m &= m - 1) {
+				int b = __builtin_ctz(m);
+				if (shape_specular_color_at(s, vec3_make(p->px[b], p->py[b], p->pz[b]),
+							    &out->spec_color[b]))
+					out->spec |= (uint32_t)1 << b;
+			}
+	}
+	turn_chosen()(d, out);
+}
+
+void hit_lanes_point(const struct hit_lanes *h, int i, struct render_point *out)
+{
+	const struct light_dirs_points *p = &h->pts;
+
+	out->hit = h->hit[i];
+	out->t = h->t[i];
+	out->p = vec3_make(p->px[i], p->py[i], p->pz[i]);
+	out->n = vec3_make(p->nx[i], p->ny[i], p->nz[i]);
+	out->refl = vec3_make(h->refl[0][i], h->refl[1][i], h->refl[2][i]);
+	out->dn = h->dn[i];
+	out->eps = p->eps[i];
+	out->base = color_make(h->base[0][i], h->base[1][i], h->base[2][i]);
+	out->spec = h->spec >> i & 1;
+	out->spec_color = out->spec ? h->spec_color[i] : color_make(0.0, 0.0, 0.0);
+}

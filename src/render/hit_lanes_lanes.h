@@ -1,0 +1,43 @@
+/* hit_lanes' shared part (hit_lanes.h) written once over base/lanes.h's
+ * vectors: the including file, compiled for one set of instructions,
+ * defines HIT_LANES_FN(name), the name it gets.  The scalar lines each
+ * step stands for are shade.c's render_point_in and shade_math.h's
+ * render_offset. */
+#include "base/lanes.h"
+#include "render/hit_lanes.h"
+#include "whitted/render.h"
+
+static void HIT_LANES_FN(turn)(double (*d)[HIT_LANES], struct hit_lanes *out)
+{
+	const lv zero = lv_set1(0.0), one = lv_set1(1.0), sign = lv_set1(-0.0);
+	struct light_dirs_points *p = &out->pts;
+	int j;
+
+	for (j = 0; j < HIT_LANES; j += LANES_W) {
+		lv dx = lv_load(d[0] + j), dy = lv_load(d[1] + j), dz = lv_load(d[2] + j);
+		lv nx = lv_load(p->nx + j), ny = lv_load(p->ny + j), nz = lv_load(p->nz + j);
+		/* dn = vec3_dot(d, n); if (dn > 0) { n = -n; dn = -dn; } */
+		lv dn = lv_add(lv_add(lv_mul(dx, nx), lv_mul(dy, ny)), lv_mul(dz, nz));
+		lm flip = lv_gt(dn, zero);
+		lv m = one, k;
+
+		nx = lv_sel(flip, lv_neg(nx), nx);
+		ny = lv_sel(flip, lv_neg(ny), ny);
+		nz = lv_sel(flip, lv_neg(nz), nz);
+		dn = lv_sel(flip, lv_neg(dn), dn);
+		lv_store(p->nx + j, nx);
+		lv_store(p->ny + j, ny);
+		lv_store(p->nz + j, nz);
+		lv_store(out->dn + j, dn);
+		/* refl = vec3_add_scaled(d, n, -2.0 * dn) */
+		k = lv_mul(lv_set1(-2.0), dn);
+		lv_store(out->refl[0] + j, lv_add(dx, lv_mul(nx, k)));
+		lv_store(out->refl[1] + j, lv_add(dy, lv_mul(ny, k)));
+		lv_store(out->refl[2] + j, lv_add(dz, lv_mul(nz, k)));
+		/* render_offset: m = ax > m ? ax : m, then ay, then az */
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(p->px + j)), m);
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(p->py + j)), m);
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(p->pz + j)), m);
+		lv_store(p->eps + j, lv_mul(lv_set1(RT_EPSILON), m));
+	}
+}
