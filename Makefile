@@ -113,10 +113,12 @@ $(BUILD)/san/%.o: %.c
 # every path is the plain C one.
 ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
 %/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o %/render/light_dirs_avx2.o \
-	%/render/shade_lanes_avx2.o %/render/hit_lanes_avx2.o: \
+	%/render/shade_lanes_avx2.o %/render/hit_lanes_avx2.o \
+	%/render/camera_lanes_avx2.o: \
 	ALL_CFLAGS += -mavx2
 %/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o %/render/light_dirs_avx512.o \
-	%/render/shade_lanes_avx512.o %/render/hit_lanes_avx512.o: \
+	%/render/shade_lanes_avx512.o %/render/hit_lanes_avx512.o \
+	%/render/camera_lanes_avx512.o: \
 	ALL_CFLAGS += -mavx512f
 # The AVX-512 walk's float box tests widen their answers with fused
 # multiply-adds (every processor with AVX-512 has them; base/simd.c asks).

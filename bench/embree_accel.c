@@ -300,6 +300,18 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 	return blocked;
 }
 
+void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			   const double *t_min, double *t_max, const struct shape **hit)
+{
+	uint32_t m;
+
+	for (m = active; m; m &= m - 1) {
+		int i = __builtin_ctz(m);
+		struct ray r = ray_packet_get(p, i);
+		hit[i] = accel_intersect(a, &r, t_min[i], t_max + i);
+	}
+}
+
 bool accel_packets_pay(const struct accel *a)
 {
 	(void)a;

@@ -233,6 +233,41 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 	return blocked;
 }
 
+void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			   const double *t_min, double *t_max, const struct shape **hit)
+{
+	struct ray r[ACCEL_PACKET];
+	double t0[ACCEL_PACKET], t1[ACCEL_PACKET];
+	const struct shape *h[ACCEL_PACKET];
+	int bit[ACCEL_PACKET], n = 0, i;
+	uint32_t m;
+
+	if (a->walk == ACCEL_WALK_BASE) {
+		if (a->rays == ACCEL_WALK_AVX512)
+			accel_avx512_rays_intersect_lanes(a, p, active, t_min, t_max, hit);
+		else if (a->rays == ACCEL_WALK_AVX2)
+			accel_avx2_rays_intersect_lanes(a, p, active, t_min, t_max, hit);
+		else
+			accel_rays_intersect_lanes(a, p, active, t_min, t_max, hit);
+		return;
+	}
+	/* The wide trees' packets take the rays one by one. */
+	for (m = active; m; m &= m - 1) {
+		bit[n] = __builtin_ctz(m);
+		r[n] = ray_packet_get(p, bit[n]);
+		t0[n] = t_min[bit[n]];
+		t1[n] = t_max[bit[n]];
+		n++;
+	}
+	if (n == 0)
+		return;
+	accel_intersect_packet(a, r, n, t0, t1, h);
+	for (i = 0; i < n; i++) {
+		t_max[bit[i]] = t1[i];
+		hit[bit[i]] = h[i];
+	}
+}
+
 bool accel_packets_pay(const struct accel *a)
 {
 	return a->walk != ACCEL_WALK_BASE || a->rays != ACCEL_WALK_BASE;

@@ -46,6 +46,13 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
  * into single rays and back. */
 uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
 			      const double *t_min, const double *t_max);
+/* accel_intersect_packet for the rays of p's lanes in `active` (bits
+ * below ACCEL_PACKET), left where they are: hit[i] and t_max[i] of those
+ * lanes only (the others are not read and not written; p's may hold
+ * anything).  For rays made a vector at a time (the camera's, a packet's
+ * reflections, which keep their hits' lanes). */
+void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			   const double *t_min, double *t_max, const struct shape **hit);
 /* Whether packets are faster than single rays here: where the walks have
  * the AVX2 or AVX-512 box tests (a tree big enough; see accel_build.c),
  * or a small tree's packets go a ray a vector lane in AVX2 or AVX-512

@@ -24,3 +24,10 @@ uint32_t accel_rays_occluded_packet(const struct accel *a, const struct ray *r, 
 {
 	return RAYS_WALK(occluded_packet)(a, r, n, t_min, t_max);
 }
+
+void accel_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
+				uint32_t active, const double *t_min, double *t_max,
+				const struct shape **hit)
+{
+	RAYS_WALK(intersect_lanes)(a, p, active, t_min, t_max, hit);
+}

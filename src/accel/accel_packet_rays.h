@@ -276,26 +276,25 @@ static inline void RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct
 	RAYS_WALK(node_lanes)(nd, v, mask, t_max, entry, child);
 }
 
-static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
-					     const double *t_min, double *t_max,
-					const struct shape **hit)
+/* The nearest hits of v's rays of `all` (not 0), loaded, from t_max[i]
+ * down. */
+static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet_rays *v,
+				      uint32_t all, double *t_max, const struct shape **hit)
 {
 	struct { uintptr_t slot; uint32_t mask; } stack[ACCEL_WALK_STACK + 1];
-	struct packet_rays v;
 	struct walk_best b[LANES];
 	double bt[LANES];
-	uint32_t all = packet_all(n);
+	uint32_t m;
 	size_t i;
-	int top = 0;
+	int top = 0, first = __builtin_ctz(all);
 
-	RAYS_WALK(load)(&v, r, n, t_min);
 	for (i = 0; i < LANES; i++) {
-		b[i].t = t_max[i < (size_t)n ? i : 0];
+		b[i].t = t_max[all >> i & 1 ? (int)i : first];
 		b[i].hit = NULL;
 		b[i].key = 0;
 	}
 	for (i = 0; i < a->n_unbounded; i++)
-		packet_best_test(a->unbounded[i], a->unbounded_key[i], &v.s, all, b);
+		packet_best_test(a->unbounded[i], a->unbounded_key[i], &v->s, all, b);
 	if (a->n_nodes > 0) {
 		stack[top].slot = accel_slot_make(0, ACCEL_SLOT_NODE);
 		stack[top++].mask = all;
@@ -312,13 +311,13 @@ static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray 
 		slot = stack[top].slot;
 		mask = stack[top].mask;
 		if (!accel_slot_is_node(slot)) {
-			packet_leaf_nearest(a, slot, &v.s, mask, b);
+			packet_leaf_nearest(a, slot, &v->s, mask, b);
 			continue;
 		}
 		nd = &((const struct bvh4_node *)a->nodes)[accel_slot_index(slot)];
 		for (i = 0; i < LANES; i++)
 			bt[i] = b[i].t;
-		RAYS_WALK(node_test)(nd, &v, mask, bt, e, child);
+		RAYS_WALK(node_test)(nd, v, mask, bt, e, child);
 		for (c = 0; c < 4; c++)
 			in_any |= (unsigned)(child[c] != 0) << c;
 		if (!in_any)
@@ -334,10 +333,56 @@ static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray 
 			stack[top++].mask = child[order[k]];
 		}
 	}
-	for (i = 0; i < (size_t)n; i++) {
+	for (m = all; m; m &= m - 1) {
+		i = (size_t)__builtin_ctz(m);
 		t_max[i] = b[i].t;
 		hit[i] = b[i].hit;
 	}
+}
+
+static void RAYS_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
+					const double *t_min, double *t_max,
+					const struct shape **hit)
+{
+	struct packet_rays v;
+
+	if (n <= 0)
+		return;
+	RAYS_WALK(load)(&v, r, n, t_min);
+	RAYS_WALK(intersect_rays)(a, &v, packet_all(n), t_max, hit);
+}
+
+/* from's n arrays (the packet's coordinates, then t_min, and t_max
+ * where a walk takes it from there) into to's, the lanes not in `active`
+ * copies of the first one in it, as the shapes' packet methods may read
+ * them (whitted/shape.h): the caller's may hold no ray at all. */
+static inline void RAYS_WALK(lanes_copy)(const double *const *from, double *const *to, int n,
+					 uint32_t active)
+{
+	int first = __builtin_ctz(active), j, k;
+
+	for (k = 0; k < n; k++) {
+		const lv copy = lv_set1(from[k][first]);
+		for (j = 0; j < LANES; j += LANES_W)
+			lv_store(to[k] + j, lv_sel(lm_from_bits(active >> j), lv_load(from[k] + j), copy));
+	}
+}
+
+/* accel_intersect_lanes: the packet's lanes of `active` as they are. */
+static void RAYS_WALK(intersect_lanes)(const struct accel *a, const struct ray_packet *p,
+				       uint32_t active, const double *t_min, double *t_max,
+				       const struct shape **hit)
+{
+	const double *from[7] = { p->ox, p->oy, p->oz, p->dx, p->dy, p->dz, t_min };
+	struct packet_rays v;
+	double *const to[7] = { v.s.p.ox, v.s.p.oy, v.s.p.oz, v.s.p.dx, v.s.p.dy, v.s.p.dz,
+				v.s.t_min };
+
+	if (!active)
+		return;
+	RAYS_WALK(lanes_copy)(from, to, 7, active);
+	RAYS_WALK(prepare)(&v, active);
+	RAYS_WALK(intersect_rays)(a, &v, active, t_max, hit);
 }
 
 /* Which rays of `all` anything blocks in (t_min, t_far[lane]): v's
@@ -410,23 +455,14 @@ static uint32_t RAYS_WALK(occluded_lanes)(const struct accel *a, const struct ra
 {
 	const double *from[8] = { p->ox, p->oy, p->oz, p->dx, p->dy, p->dz, t_min, t_max };
 	struct packet_rays v;
-	double t_far[LANES], *to[8];
-	int first, j, k;
+	double t_far[LANES];
+	double *const to[8] = { v.s.p.ox, v.s.p.oy, v.s.p.oz, v.s.p.dx, v.s.p.dy, v.s.p.dz,
+				v.s.t_min, t_far };
 
 	if (!active)
 		return 0;
-	/* The lanes not traced become copies of the first one traced, as
-	 * the shapes' packet methods may read them (whitted/shape.h): the
-	 * caller's may hold no ray at all (a light at its point). */
-	first = __builtin_ctz(active);
-	to[0] = v.s.p.ox, to[1] = v.s.p.oy, to[2] = v.s.p.oz;
-	to[3] = v.s.p.dx, to[4] = v.s.p.dy, to[5] = v.s.p.dz;
-	to[6] = v.s.t_min, to[7] = t_far;
-	for (k = 0; k < 8; k++) {
-		const lv copy = lv_set1(from[k][first]);
-		for (j = 0; j < LANES; j += LANES_W)
-			lv_store(to[k] + j, lv_sel(lm_from_bits(active >> j), lv_load(from[k] + j), copy));
-	}
+	/* The lanes not traced: a light at its point has no ray. */
+	RAYS_WALK(lanes_copy)(from, to, 8, active);
 	RAYS_WALK(prepare)(&v, active);
 	return RAYS_WALK(occluded_rays)(a, &v, active, t_far);
 }

@@ -231,5 +231,15 @@ uint32_t accel_avx2_rays_occluded_lanes(const struct accel *a, const struct ray_
 uint32_t accel_avx512_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 					  uint32_t active, const double *t_min,
 					  const double *t_max);
+/* accel_intersect_lanes's contract, a ray a vector lane likewise. */
+void accel_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
+				uint32_t active, const double *t_min, double *t_max,
+				const struct shape **hit);
+void accel_avx2_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
+				     uint32_t active, const double *t_min, double *t_max,
+				     const struct shape **hit);
+void accel_avx512_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
+				       uint32_t active, const double *t_min, double *t_max,
+				       const struct shape **hit);
 
 #endif

@@ -56,6 +56,13 @@ uint32_t ACCEL_EXPORT(rays_occluded_lanes)(const struct accel *a, const struct r
 	return RAYS_WALK(occluded_lanes)(a, p, active, t_min, t_max);
 }
 
+void ACCEL_EXPORT(rays_intersect_lanes)(const struct accel *a, const struct ray_packet *p,
+					uint32_t active, const double *t_min, double *t_max,
+					const struct shape **hit)
+{
+	RAYS_WALK(intersect_lanes)(a, p, active, t_min, t_max, hit);
+}
+
 bool ACCEL_EXPORT(compiled)(void)
 {
 	return true;
@@ -126,6 +133,18 @@ uint32_t ACCEL_EXPORT(rays_occluded_lanes)(const struct accel *a, const struct r
 	(void)t_min;
 	(void)t_max;
 	return 0;
+}
+
+void ACCEL_EXPORT(rays_intersect_lanes)(const struct accel *a, const struct ray_packet *p,
+					uint32_t active, const double *t_min, double *t_max,
+					const struct shape **hit)
+{
+	(void)a;
+	(void)p;
+	(void)active;
+	(void)t_min;
+	(void)t_max;
+	(void)hit;
 }
 
 bool ACCEL_EXPORT(compiled)(void)

@@ -8,62 +8,62 @@
 #define HIT_LANES_FN(name) hit_lanes_base_##name
 #include "render/hit_lanes_lanes.h"
 
-hit_lanes_turn_fn *const hit_lanes_turn_base = HIT_LANES_FN(turn);
+const struct hit_lanes_set hit_lanes_base = { HIT_LANES_FN(turn), HIT_LANES_FN(offsets),
+					       HIT_LANES_FN(bounce) };
 
-static hit_lanes_turn_fn *turn_chosen(void)
+static const struct hit_lanes_set *chosen(void)
 {
 	switch (rt_simd_level()) {
 	case RT_SIMD_AVX512:
-		if (hit_lanes_turn_avx512)
-			return hit_lanes_turn_avx512;
+		if (hit_lanes_avx512.turn)
+			return &hit_lanes_avx512;
 		/* fall through */
 	case RT_SIMD_AVX2:
-		if (hit_lanes_turn_avx2)
-			return hit_lanes_turn_avx2;
+		if (hit_lanes_avx2.turn)
+			return &hit_lanes_avx2;
 		/* fall through */
 	default:
-		return hit_lanes_turn_base;
+		return &hit_lanes_base;
 	}
 }
 
-void hit_lanes_fill(const struct ray *r, int n, const double *t, const struct shape *const *hit,
-		    struct hit_lanes *out)
+void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t,
+		    const struct shape *const *hit, struct hit_lanes *out)
 {
 	struct light_dirs_points *p = &out->pts;
 	double *const nv[3] = { p->nx, p->ny, p->nz };
 	double *const cv[3] = { out->base[0], out->base[1], out->base[2] };
 	const double *const pc[3] = { p->px, p->py, p->pz };
 	double d[3][HIT_LANES];
-	uint32_t left;
+	uint32_t left, m;
 	int i, first;
 
 	out->hits = 0;
 	out->spec = 0;
-	for (i = 0; i < n; i++)
-		if (hit[i])
-			out->hits |= (uint32_t)1 << i;
+	for (m = active; m; m &= m - 1)
+		if (hit[__builtin_ctz(m)])
+			out->hits |= (uint32_t)1 << __builtin_ctz(m);
 	if (!out->hits)
 		return;
 	first = __builtin_ctz(out->hits);
 	for (i = 0; i < HIT_LANES; i++) {
 		int k = out->hits >> i & 1 ? i : first;
-		/* ray_at */
-		struct vec3 at = ray_at(&r[k], t[k]);
 
 		out->hit[i] = hit[k];
 		out->t[i] = t[k];
-		p->px[i] = at.x;
-		p->py[i] = at.y;
-		p->pz[i] = at.z;
-		d[0][i] = r[k].dir.x;
-		d[1][i] = r[k].dir.y;
-		d[2][i] = r[k].dir.z;
+		/* ray_at: vec3_add_scaled(origin, dir, t) */
+		p->px[i] = r->ox[k] + r->dx[k] * t[k];
+		p->py[i] = r->oy[k] + r->dy[k] * t[k];
+		p->pz[i] = r->oz[k] + r->dz[k] * t[k];
+		d[0][i] = r->dx[k];
+		d[1][i] = r->dy[k];
+		d[2][i] = r->dz[k];
 	}
 	/* Each shape once, for its lanes; the lanes not hit take the first
 	 * one's shape, so that every lane's values are made. */
 	for (left = ((uint32_t)1 << HIT_LANES) - 1; left;) {
 		const struct shape *s = out->hit[__builtin_ctz(left)];
-		uint32_t same = 0, m;
+		uint32_t same = 0;
 
 		for (m = left; m; m &= m - 1)
 			if (out->hit[__builtin_ctz(m)] == s)
@@ -96,7 +96,7 @@ void hit_lanes_fill(const struct ray *r, int n, const double *t, const struct sh
 					out->spec |= (uint32_t)1 << b;
 			}
 	}
-	turn_chosen()(d, out);
+	chosen()->turn(d, out);
 }
 
 void hit_lanes_point(const struct hit_lanes *h, int i, struct render_point *out)
@@ -113,4 +113,14 @@ void hit_lanes_point(const struct hit_lanes *h, int i, struct render_point *out)
 	out->base = color_make(h->base[0][i], h->base[1][i], h->base[2][i]);
 	out->spec = h->spec >> i & 1;
 	out->spec_color = out->spec ? h->spec_color[i] : color_make(0.0, 0.0, 0.0);
+}
+
+void hit_lanes_offsets(const struct ray_packet *r, double *t_min)
+{
+	chosen()->offsets(r, t_min);
+}
+
+void hit_lanes_bounce(const struct hit_lanes *h, struct ray_packet *out)
+{
+	chosen()->bounce(h, out);
 }

@@ -32,21 +32,28 @@ struct hit_lanes {
 	struct color spec_color[HIT_LANES];
 };
 
-/* The hits of rays r[0..n) (n <= HIT_LANES): hit[i] ray i's nearest shape
- * (NULL: none) at t[i]. */
-void hit_lanes_fill(const struct ray *r, int n, const double *t, const struct shape *const *hit,
-		    struct hit_lanes *out);
+/* The hits of r's rays of `active` (bits below HIT_LANES): hit[i] ray
+ * i's nearest shape (NULL: none) at t[i]. */
+void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t,
+		    const struct shape *const *hit, struct hit_lanes *out);
 /* Lane i (hit) as render_point_at gives it. */
 void hit_lanes_point(const struct hit_lanes *h, int i, struct render_point *out);
+/* render_offset of each lane's origin: t_min of rays leaving a surface. */
+void hit_lanes_offsets(const struct ray_packet *r, double *t_min);
+/* Each lane's reflection as render_bounce makes it (from p + eps R along
+ * R), into out's lanes below HIT_LANES. */
+void hit_lanes_bounce(const struct hit_lanes *h, struct ray_packet *out);
 
-/* The part every shape shares, for one set of instructions
- * (hit_lanes_lanes.h): from the directions d (a coordinate an array) and
- * the normals in out->pts, d.N, N turned, R and, from the points, the
- * offsets; every lane.  The baseline's always there; the others NULL in
- * a file compiled without them. */
-typedef void hit_lanes_turn_fn(double (*d)[HIT_LANES], struct hit_lanes *out);
-extern hit_lanes_turn_fn *const hit_lanes_turn_base;
-extern hit_lanes_turn_fn *const hit_lanes_turn_avx2;
-extern hit_lanes_turn_fn *const hit_lanes_turn_avx512;
+/* One set of instructions' vector parts (hit_lanes_lanes.h), every lane:
+ * turn makes, from the directions d (a coordinate an array) and the
+ * normals in out->pts, d.N, N turned, R and, from the points, the
+ * offsets; offsets and bounce are the functions above.  The baseline's
+ * always there; the others all NULL in a file compiled without them. */
+struct hit_lanes_set {
+	void (*turn)(double (*d)[HIT_LANES], struct hit_lanes *out);
+	void (*offsets)(const struct ray_packet *r, double *t_min);
+	void (*bounce)(const struct hit_lanes *h, struct ray_packet *out);
+};
+extern const struct hit_lanes_set hit_lanes_base, hit_lanes_avx2, hit_lanes_avx512;
 
 #endif

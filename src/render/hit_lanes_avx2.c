@@ -9,7 +9,8 @@
 #define HIT_LANES_FN(name) hit_lanes_avx2_##name
 #include "render/hit_lanes_lanes.h"
 
-hit_lanes_turn_fn *const hit_lanes_turn_avx2 = HIT_LANES_FN(turn);
+const struct hit_lanes_set hit_lanes_avx2 = { HIT_LANES_FN(turn), HIT_LANES_FN(offsets),
+						HIT_LANES_FN(bounce) };
 #else
-hit_lanes_turn_fn *const hit_lanes_turn_avx2 = NULL;
+const struct hit_lanes_set hit_lanes_avx2 = { NULL, NULL, NULL };
 #endif

@@ -9,7 +9,8 @@
 #define HIT_LANES_FN(name) hit_lanes_avx512_##name
 #include "render/hit_lanes_lanes.h"
 
-hit_lanes_turn_fn *const hit_lanes_turn_avx512 = HIT_LANES_FN(turn);
+const struct hit_lanes_set hit_lanes_avx512 = { HIT_LANES_FN(turn), HIT_LANES_FN(offsets),
+						HIT_LANES_FN(bounce) };
 #else
-hit_lanes_turn_fn *const hit_lanes_turn_avx512 = NULL;
+const struct hit_lanes_set hit_lanes_avx512 = { NULL, NULL, NULL };
 #endif

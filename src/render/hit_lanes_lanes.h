@@ -41,3 +41,38 @@ static void HIT_LANES_FN(turn)(double (*d)[HIT_LANES], struct hit_lanes *out)
 		lv_store(p->eps + j, lv_mul(lv_set1(RT_EPSILON), m));
 	}
 }
+
+/* render_offset of each origin: m = ax > m ? ax : m, then ay, then az. */
+static void HIT_LANES_FN(offsets)(const struct ray_packet *r, double *t_min)
+{
+	const lv sign = lv_set1(-0.0);
+	int j;
+
+	for (j = 0; j < HIT_LANES; j += LANES_W) {
+		lv m = lv_set1(1.0);
+
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(r->ox + j)), m);
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(r->oy + j)), m);
+		m = lv_max_first(lv_andnot_bits(sign, lv_load(r->oz + j)), m);
+		lv_store(t_min + j, lv_mul(lv_set1(RT_EPSILON), m));
+	}
+}
+
+/* render_bounce: origin vec3_add_scaled(p, refl, eps), direction refl. */
+static void HIT_LANES_FN(bounce)(const struct hit_lanes *h, struct ray_packet *out)
+{
+	int j;
+
+	for (j = 0; j < HIT_LANES; j += LANES_W) {
+		lv eps = lv_load(h->pts.eps + j);
+		lv rx = lv_load(h->refl[0] + j), ry = lv_load(h->refl[1] + j);
+		lv rz = lv_load(h->refl[2] + j);
+
+		lv_store(out->ox + j, lv_add(lv_load(h->pts.px + j), lv_mul(rx, eps)));
+		lv_store(out->oy + j, lv_add(lv_load(h->pts.py + j), lv_mul(ry, eps)));
+		lv_store(out->oz + j, lv_add(lv_load(h->pts.pz + j), lv_mul(rz, eps)));
+		lv_store(out->dx + j, rx);
+		lv_store(out->dy + j, ry);
+		lv_store(out->dz + j, rz);
+	}
+}

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "render/camera_lanes.h"
 #include "render/camera_span.h"
 #include "render/hit_lanes.h"
 #include "render/render_packet.h"
@@ -22,6 +23,12 @@
 #include "scene/scene_impl.h"
 
 #define PACKET_SIDE 4	/* PACKET_SIDE^2 <= ACCEL_PACKET */
+
+/* The lanes [0, n). */
+static uint32_t packet_lanes(int n)
+{
+	return n >= 32 ? ~(uint32_t)0 : ((uint32_t)1 << n) - 1;
+}
 
 bool render_packets_wanted(const struct accel *a)
 {
@@ -37,10 +44,11 @@ bool render_packets_wanted(const struct accel *a)
 /* The hits among h's that shade_lanes shades as render_shade_point
  * would (shade_lanes.h: point lights only, all of whose shadow answers
  * the packet has; no highlight colour of a texture; no glass; a mirror's
- * reflection seen already, slot[i] of seen), with what it needs of them
- * in *sum; the other lanes are filled too, as the vectors read them. */
+ * reflection seen already: lane i of `reflects`, whose colour is seen[i]),
+ * with what it needs of them in *sum; the other lanes are filled too, as
+ * the vectors read them. */
 static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes *h,
-			   const int *slot, const struct color *seen, int level,
+			   uint32_t reflects, const struct color *seen, int level,
 			   struct shade_lanes *sum)
 {
 	const struct scene *sc = job->scene;
@@ -55,21 +63,21 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
 	for (i = 0; i < SHADE_LANES; i++) {
 		const struct material *m = &h->hit[i]->mat;
 		int q = hits >> i & 1 ? i : __builtin_ctz(hits);
-		bool reflected = slot[i] >= 0 && hits >> i & 1;
+		bool reflected = reflects >> i & 1;
 
 		if (hits >> i & 1 && !(h->spec >> i & 1) && !(m->kt > 0.0) &&
-		    (slot[i] >= 0 || !(deeper && m->kr > 0.0))) {
+		    (reflected || !(deeper && m->kr > 0.0))) {
 			lean |= (uint32_t)1 << i;
-			sum->reflects |= (uint32_t)(slot[i] >= 0) << i;
+			sum->reflects |= (uint32_t)reflected << i;
 		}
 		sum->ka[i] = m->ka;
 		sum->kd[i] = m->kd;
 		sum->ks[i] = m->ks;
 		sum->kr[i] = m->kr;
 		sum->shininess[i] = m->shininess;
-		sum->seen[0][i] = reflected ? seen[slot[i]].r : h->base[0][q];
-		sum->seen[1][i] = reflected ? seen[slot[i]].g : h->base[1][q];
-		sum->seen[2][i] = reflected ? seen[slot[i]].b : h->base[2][q];
+		sum->seen[0][i] = reflected ? seen[i].r : h->base[0][q];
+		sum->seen[1][i] = reflected ? seen[i].g : h->base[1][q];
+		sum->seen[2][i] = reflected ? seen[i].b : h->base[2][q];
 	}
 	for (k = 0; k < 3; k++) {
 		memcpy(sum->base[k], h->base[k], sizeof(sum->base[k]));
@@ -80,110 +88,128 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
 	return lean;
 }
 
-/* The colours of the rays r[0..n) (n <= ACCEL_PACKET) at `level`, as
- * render_trace gives them: the nearest hits in one packet, their shadow
- * rays in one packet a light, and their reflections (the mirrors' that
- * are not glass) in one packet more, a level down. */
-static void shade_packet(const struct render_job *job, const struct ray *r, int n, int level,
-			 struct ray_counts *counts, struct color *out)
+/* The colours of r's rays of `active` (bits below ACCEL_PACKET) at
+ * `level`, into out's lanes, as render_trace gives them: the nearest hits
+ * in one packet, their shadow rays in one packet a light, and their
+ * reflections (the mirrors' that are not glass) in one packet more, a
+ * level down, each in its hit's lane. */
+static void shade_packet(const struct render_job *job, const struct ray_packet *r,
+			 uint32_t active, int level, struct ray_counts *counts, struct color *out)
 {
+	static const double far[ACCEL_PACKET] = { INFINITY, INFINITY, INFINITY, INFINITY,
+						  INFINITY, INFINITY, INFINITY, INFINITY,
+						  INFINITY, INFINITY, INFINITY, INFINITY,
+						  INFINITY, INFINITY, INFINITY, INFINITY };
 	const struct scene *sc = job->scene;
 	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
 	const struct shape *hit[ACCEL_PACKET];
 	struct hit_lanes h;
 	struct render_shadows shadows;
-	struct ray bounce[ACCEL_PACKET];
+	struct ray_packet bounce;
 	struct color seen[ACCEL_PACKET];
-	int slot[ACCEL_PACKET], nb = 0, i;
-	uint32_t lean, m;
+	uint32_t reflects = 0, lean, m;
 	struct shade_lanes sum;
+	int i;
 
-	for (i = 0; i < ACCEL_PACKET; i++)
-		slot[i] = -1;
-	for (i = 0; i < n; i++) {
-		t_min[i] = render_offset(r[i].origin);
-		t[i] = INFINITY;
-	}
-	accel_intersect_packet(sc->accel, r, n, t_min, t, hit);
-	hit_lanes_fill(r, n, t, hit, &h);
+	hit_lanes_offsets(r, t_min);
+	memcpy(t, far, sizeof(t));
+	accel_intersect_lanes(sc->accel, r, active, t_min, t, hit);
+	hit_lanes_fill(r, active, t, hit, &h);
 	if (level < depth)
-		for (m = h.hits; m; m &= m - 1) {
-			i = __builtin_ctz(m);
-			if (!render_reflects(&job->settings, h.hit[i], level))
-				continue;
-			/* render_bounce */
-			bounce[nb].origin = vec3_add_scaled(
-				vec3_make(h.pts.px[i], h.pts.py[i], h.pts.pz[i]),
-				vec3_make(h.refl[0][i], h.refl[1][i], h.refl[2][i]), h.pts.eps[i]);
-			bounce[nb].dir = vec3_make(h.refl[0][i], h.refl[1][i], h.refl[2][i]);
-			slot[i] = nb++;
-		}
+		for (m = h.hits; m; m &= m - 1)
+			if (render_reflects(&job->settings, h.hit[__builtin_ctz(m)], level))
+				reflects |= (uint32_t)1 << __builtin_ctz(m);
 	render_shadow_packets(sc, &h.pts, h.hits, &shadows);
-	if (nb > 0)
-		shade_packet(job, bounce, nb, level + 1, counts, seen);
-	lean = lean_lanes(job, &h, slot, seen, level, &sum);
+	if (reflects) {
+		hit_lanes_bounce(&h, &bounce);
+		shade_packet(job, &bounce, reflects, level + 1, counts, seen);
+	}
+	lean = lean_lanes(job, &h, reflects, seen, level, &sum);
 	if (lean) {
 		double c[3][SHADE_LANES];
 
 		counts->shadow += shade_lanes(&sum, &shadows, sc->lights, sc->n_lights, c);
 		counts->reflection += (uint64_t)__builtin_popcount(sum.reflects);
-		for (i = 0; i < n; i++)
-			if (lean >> i & 1)
-				out[i] = color_make(c[0][i], c[1][i], c[2][i]);
+		for (m = lean; m; m &= m - 1) {
+			i = __builtin_ctz(m);
+			out[i] = color_make(c[0][i], c[1][i], c[2][i]);
+		}
 	}
-	for (i = 0; i < n; i++) {
+	for (m = active & ~lean; m; m &= m - 1) {
 		struct render_point q;
+		struct ray ri;
 
-		if (lean >> i & 1)
-			continue;
+		i = __builtin_ctz(m);
 		out[i] = color_make(0.0, 0.0, 0.0);
 		if (!(h.hits >> i & 1))
 			continue;
 		shadows.bit = i;
 		hit_lanes_point(&h, i, &q);
-		out[i] = render_shade_point(sc, &job->settings, &r[i], &q, level, counts, &shadows,
-					    slot[i] >= 0 ? &seen[slot[i]] : NULL);
+		ri = ray_packet_get(r, i);
+		out[i] = render_shade_point(sc, &job->settings, &ri, &q, level, counts, &shadows,
+					    reflects >> i & 1 ? &seen[i] : NULL);
 	}
 }
 
 void render_rays_packets(const struct render_job *job, const struct ray *r, int n,
 			 struct ray_counts *counts, struct color *out)
 {
-	int i;
+	struct ray_packet p;
+	int i, k;
 
-	for (i = 0; i < n; i += ACCEL_PACKET)
-		shade_packet(job, r + i, n - i < ACCEL_PACKET ? n - i : ACCEL_PACKET, 1, counts,
-			     out + i);
+	for (i = 0; i < n; i += ACCEL_PACKET) {
+		int m = n - i < ACCEL_PACKET ? n - i : ACCEL_PACKET;
+
+		for (k = 0; k < m; k++)
+			ray_packet_set(&p, k, &r[i + k]);
+		shade_packet(job, &p, packet_lanes(m), 1, counts, out + i);
+	}
 }
 
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, struct ray_counts *counts)
 {
+	const struct camera *cam = job->camera;
 	struct camera_span span;
-	int px, py, w = x1 - x0;
+	int px, py, w = x1 - x0, k;
 
-	camera_span_init(&span, job->camera, x0, x1);
+	camera_span_init(&span, cam, x0, x1);
 	for (py = y0; py < y1; py += PACKET_SIDE) {
-		/* The rays of PACKET_SIDE rows at once, as render_block makes
-		 * them; then each packet of PACKET_SIDE x PACKET_SIDE. */
-		struct ray rows[PACKET_SIDE][CAMERA_SPAN_MAX];
+		/* Each row's up * v, as camera_span_rays makes it; then the rays
+		 * of each packet of PACKET_SIDE x PACKET_SIDE pixels, a lane a
+		 * ray in the order of their rows. */
+		struct vec3 up_v[PACKET_SIDE];
 		uint8_t bytes[PACKET_SIDE][CAMERA_SPAN_MAX * 3];
 		int rows_n = y1 - py < PACKET_SIDE ? y1 - py : PACKET_SIDE, y;
 
 		for (y = 0; y < rows_n; y++)
-			camera_span_rays(&span, job->camera, py + y, rows[y]);
+			up_v[y] = vec3_scale(cam->up, cam->half_height - (py + y + 0.5) * cam->pixel_scale);
 		for (px = 0; px < w; px += PACKET_SIDE) {
-			struct ray r[PACKET_SIDE * PACKET_SIDE];
+			struct camera_lanes_in in;
+			struct ray_packet r;
 			struct color c[PACKET_SIDE * PACKET_SIDE];
 			int cols = w - px < PACKET_SIDE ? w - px : PACKET_SIDE, n = 0, i = 0, x;
 
 			for (y = 0; y < rows_n; y++)
-				for (x = px; x < px + cols; x++)
-					r[n++] = rows[y][x];
-			shade_packet(job, r, n, 1, counts, c);
+				for (x = px; x < px + cols; x++, n++) {
+					in.ru[0][n] = span.right_u[x].x;
+					in.ru[1][n] = span.right_u[x].y;
+					in.ru[2][n] = span.right_u[x].z;
+					in.uv[0][n] = up_v[y].x;
+					in.uv[1][n] = up_v[y].y;
+					in.uv[2][n] = up_v[y].z;
+				}
+			/* The lanes past the packet's rays: copies of its first. */
+			for (i = n; i < CAMERA_LANES; i++)
+				for (k = 0; k < 3; k++) {
+					in.ru[k][i] = in.ru[k][0];
+					in.uv[k][i] = in.uv[k][0];
+				}
+			camera_lanes(cam, &in, &r);
+			shade_packet(job, &r, packet_lanes(n), 1, counts, c);
 			counts->primary += (uint64_t)n;
-			for (y = 0; y < rows_n; y++)
+			for (y = 0, i = 0; y < rows_n; y++)
 				for (x = px; x < px + cols; x++)
 					render_rgb8(c[i++], bytes[y] + x * 3);
 		}

@@ -5,7 +5,8 @@
  * coherent and not (rays that disagree on which child is nearer), exact
  * ties (copies of one shape, cubes that share faces), rays along box faces
  * and edges (slabs of 0 * inf), and a shape with its own packet method;
- * and shadow rays given as lanes in place (accel_occluded_lanes). */
+ * and shadow rays and nearest hits of rays given as lanes in place
+ * (accel_occluded_lanes, accel_intersect_lanes). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -77,8 +78,51 @@ static void check_lanes_with(const struct accel *a, const struct ray *r, int n,
 		lo[i] = t_min[k];
 		hi[i] = t_max[k];
 	}
+	/* Lanes left out hold garbage, as a caller's may. */
+	for (i = 0; i < ACCEL_PACKET; i++)
+		if (!(active >> i & 1) && support_rng() < 0.5) {
+			p.ox[i] = NAN;
+			p.dx[i] = INFINITY;
+			lo[i] = NAN;
+			hi[i] = -1.0;
+		}
 	blocked = accel_occluded_lanes(a, &p, active, lo, hi);
 	assert_int_equal(blocked & ~active, 0);
+	/* The nearest hits likewise (accel_intersect_lanes): the active
+	 * lanes' shape and t the ray's alone, the others untouched. */
+	{
+		const struct shape *hit[ACCEL_PACKET];
+		double t[ACCEL_PACKET];
+		const struct shape *const mark = (const struct shape *)&p;
+
+		for (i = 0; i < ACCEL_PACKET; i++) {
+			hit[i] = mark;
+			t[i] = active >> i & 1 ? hi[i] : -2.0;
+		}
+		accel_intersect_lanes(a, &p, active, lo, t, hit);
+		for (i = 0; i < ACCEL_PACKET; i++) {
+			double ts = hi[i];
+			const struct shape *one;
+
+			if (!(active >> i & 1)) {
+				if (hit[i] != mark || t[i] != -2.0) {
+					print_error("lane %d, not active, written (%s)\n", i,
+						    accel_walk_name(a));
+					fail();
+				}
+				continue;
+			}
+			one = accel_intersect(a, &r[ray_of[i]], lo[i], &ts);
+			if (one != hit[i] || memcmp(&ts, &t[i], sizeof(ts)) != 0) {
+				print_error("lane %d (ray %d of %d, %s, packets %d): alone %s at %.17g, "
+					    "in lanes %s at %.17g\n",
+					    i, ray_of[i], n, accel_walk_name(a), (int)a->rays,
+					    one ? one->ops->keyword : "nothing", ts,
+					    hit[i] ? hit[i]->ops->keyword : "nothing", t[i]);
+				fail();
+			}
+		}
+	}
 	for (i = 0; i < ACCEL_PACKET; i++) {
 		bool occ;
 

@@ -3,11 +3,13 @@
  * the mirror direction, the offset, the colour and the highlight's colour,
  * for packets over a sphere, a triangle, a cube, a clipped quadric (no
  * packet methods: the shapes' defaults), the square floor, the infinite
- * one and a textured one, mixed in one packet, with misses, packets of 1
- * to 16 rays and rays from either side; the lanes not hit copies of the
- * first one hit; and the shared part of every set of instructions this
- * processor runs against the scalar arithmetic, with normals facing
- * either way, d.N of 0 and -0, and huge, tiny, infinite and NaN values. */
+ * one and a textured one, mixed in one packet, with misses, random masks
+ * of lanes and rays from either side; the lanes not hit copies of the
+ * first one hit; and the vector parts of every set of instructions this
+ * processor runs against the scalar arithmetic (the turned normal, d.N,
+ * R, the offsets of points and of origins, render_bounce), with normals
+ * facing either way, d.N of 0 and -0, and huge, tiny, infinite and NaN
+ * values. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdlib.h>
@@ -61,7 +63,7 @@ static double odd_value(void)
 	return support_uniform(-300, 300);
 }
 
-static void check_turn(hit_lanes_turn_fn *turn, const char *name)
+static void check_set(const struct hit_lanes_set *set, const char *name)
 {
 	int k, i;
 
@@ -88,7 +90,7 @@ static void check_turn(hit_lanes_turn_fn *turn, const char *name)
 			h.pts.nx[i] = nv[i].x, h.pts.ny[i] = nv[i].y, h.pts.nz[i] = nv[i].z;
 			h.pts.px[i] = pv[i].x, h.pts.py[i] = pv[i].y, h.pts.pz[i] = pv[i].z;
 		}
-		turn(d, &h);
+		set->turn(d, &h);
 		for (i = 0; i < HIT_LANES; i++) {
 			/* render_point_in's lines */
 			struct vec3 n = nv[i], refl;
@@ -112,14 +114,62 @@ static void check_turn(hit_lanes_turn_fn *turn, const char *name)
 	}
 }
 
-static void test_hit_lanes_turn(void **state)
+/* offsets and bounce: render_offset of each origin, render_bounce of
+ * each lane. */
+static void check_rays(const struct hit_lanes_set *set, const char *name)
+{
+	int k, i;
+
+	support_rng_seed(79);
+	for (k = 0; k < 20000; k++) {
+		struct ray_packet r, b;
+		struct hit_lanes h;
+		double t_min[HIT_LANES];
+
+		for (i = 0; i < HIT_LANES; i++) {
+			bool plain = support_rng() < 0.6;
+			struct vec3 o = plain ? support_random_point(support_rng() < 0.5 ? 0.5 : 500)
+					      : vec3_make(odd_value(), odd_value(), odd_value());
+			r.ox[i] = o.x, r.oy[i] = o.y, r.oz[i] = o.z;
+			h.pts.px[i] = odd_value(), h.pts.py[i] = odd_value(), h.pts.pz[i] = odd_value();
+			h.refl[0][i] = odd_value(), h.refl[1][i] = odd_value(), h.refl[2][i] = odd_value();
+			h.pts.eps[i] = plain ? 1e-6 * support_uniform(1, 500) : odd_value();
+		}
+		set->offsets(&r, t_min);
+		set->bounce(&h, &b);
+		for (i = 0; i < HIT_LANES; i++) {
+			struct render_point q;
+			struct ray want;
+			double eps = render_offset(vec3_make(r.ox[i], r.oy[i], r.oz[i]));
+
+			q.p = vec3_make(h.pts.px[i], h.pts.py[i], h.pts.pz[i]);
+			q.refl = vec3_make(h.refl[0][i], h.refl[1][i], h.refl[2][i]);
+			q.eps = h.pts.eps[i];
+			render_bounce(&q, &want);
+			if (!same(eps, t_min[i]) ||
+			    !same_vec(want.origin, vec3_make(b.ox[i], b.oy[i], b.oz[i])) ||
+			    !same_vec(want.dir, vec3_make(b.dx[i], b.dy[i], b.dz[i]))) {
+				print_error("%s, lane %d: offset %.17g / %.17g, bounce o.x %.17g / %.17g\n",
+					    name, i, eps, t_min[i], want.origin.x, b.ox[i]);
+				fail();
+			}
+		}
+	}
+}
+
+static void test_hit_lanes_sets(void **state)
 {
 	(void)state;
-	check_turn(hit_lanes_turn_base, "base");
-	if (hit_lanes_turn_avx2 && rt_simd_cpu_has(RT_SIMD_AVX2))
-		check_turn(hit_lanes_turn_avx2, "avx2");
-	if (hit_lanes_turn_avx512 && rt_simd_cpu_has(RT_SIMD_AVX512))
-		check_turn(hit_lanes_turn_avx512, "avx512");
+	check_set(&hit_lanes_base, "base");
+	check_rays(&hit_lanes_base, "base");
+	if (hit_lanes_avx2.turn && rt_simd_cpu_has(RT_SIMD_AVX2)) {
+		check_set(&hit_lanes_avx2, "avx2");
+		check_rays(&hit_lanes_avx2, "avx2");
+	}
+	if (hit_lanes_avx512.turn && rt_simd_cpu_has(RT_SIMD_AVX512)) {
+		check_set(&hit_lanes_avx512, "avx512");
+		check_rays(&hit_lanes_avx512, "avx512");
+	}
 }
 
 #define N_SHAPES 7
@@ -174,30 +224,34 @@ static void test_hit_lanes_fill(void **state)
 		struct shape *scene[5] = { shapes[0], shapes[1], shapes[2], shapes[3],
 					   shapes[4 + k % 3] };
 		struct ray r[HIT_LANES];
+		struct ray_packet rp;
 		double t[HIT_LANES];
 		const struct shape *hit[HIT_LANES];
 		struct hit_lanes h;
-		int n = 1 + (int)(support_rng() * HIT_LANES), first = -1;
+		int first = -1;
+		uint32_t active = support_rng() < 0.5 ? 0xffffu
+				  : (uint32_t)(support_rng() * 65536.0) & 0xffffu;
 		struct vec3 eye = vec3_add(support_random_point(60), vec3_make(0, 0, 20));
 
-		for (i = 0; i < n; i++) {
+		for (i = 0; i < HIT_LANES; i++) {
 			struct vec3 aim = support_random_point(40);
 			r[i].origin = support_rng() < 0.2 ? support_random_point(60) : eye;
 			r[i].dir = vec3_normalize(vec3_sub(aim, r[i].origin));
+			ray_packet_set(&rp, i, &r[i]);
+			hit[i] = NULL;
+			t[i] = -3.0;	/* not read where not active */
+			if (!(active >> i & 1))
+				continue;
 			hit[i] = nearest(scene, 5, &r[i], render_offset(r[i].origin), &t[i]);
 			if (hit[i] && first < 0)
 				first = i;
 		}
-		hit_lanes_fill(r, n, t, hit, &h);
-		for (i = 0; i < n; i++)
+		hit_lanes_fill(&rp, active, t, hit, &h);
+		for (i = 0; i < HIT_LANES; i++)
 			if ((h.hits >> i & 1) != (hit[i] != NULL)) {
 				print_error("packet %d, ray %d: hits bit %u\n", k, i, h.hits >> i & 1);
 				fail();
 			}
-		if (h.hits >> n) {
-			print_error("packet %d: hits 0x%x past n %d\n", k, h.hits, n);
-			fail();
-		}
 		for (i = 0; i < HIT_LANES && first >= 0; i++) {
 			int src = h.hits >> i & 1 ? i : first;
 			struct render_point want, got;
@@ -232,7 +286,7 @@ static void test_hit_lanes_fill(void **state)
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_hit_lanes_turn),
+		cmocka_unit_test(test_hit_lanes_sets),
 		cmocka_unit_test(test_hit_lanes_fill),
 	};
 
