@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/simd.h"
+#include "render/camera_lanes.h"
 #include "render/camera_span.h"
 #include "whitted/camera.h"
 #include "support.h"
@@ -355,10 +357,50 @@ static void test_camera_classic_unchanged(void **state)
 	}
 }
 
+/* The rays camera_lanes makes (every set of instructions this processor
+ * runs) are camera_ray's to the bit: lane i the ray of column x0 + i % n
+ * and of row py + i / n (as the packets lay out their rows). */
+static void check_lanes(const struct camera *c, const struct camera_span *sp, int py, int n)
+{
+	camera_lanes_fn *const sets[3] = { camera_lanes_base, camera_lanes_avx2, camera_lanes_avx512 };
+	const enum rt_simd need[3] = { RT_SIMD_BASE, RT_SIMD_AVX2, RT_SIMD_AVX512 };
+	struct camera_lanes_in in;
+	int k, i, ch;
+
+	for (i = 0; i < CAMERA_LANES; i++) {
+		int x = i % n, y = py + i / n;
+		struct vec3 up_v = vec3_scale(c->up, c->half_height - (y + 0.5) * c->pixel_scale);
+
+		for (ch = 0; ch < 3; ch++) {
+			in.ru[ch][i] = vec3_component(sp->right_u[x], ch);
+			in.uv[ch][i] = vec3_component(up_v, ch);
+		}
+	}
+	for (k = 0; k < 3; k++) {
+		struct ray_packet out;
+
+		if (!sets[k] || (k > 0 && !rt_simd_cpu_has(need[k])))
+			continue;
+		sets[k](c, &in, &out);
+		for (i = 0; i < CAMERA_LANES; i++) {
+			struct ray got = ray_packet_get(&out, i);
+			struct ray want = camera_ray(c, sp->x0 + i % n, py + i / n);
+
+			if (memcmp(&got.origin, &want.origin, sizeof(want.origin)) != 0 ||
+			    memcmp(&got.dir, &want.dir, sizeof(want.dir)) != 0) {
+				print_error("camera_lanes set %d, lane %d (pixel %d, %d): dir (%.17g %.17g %.17g) / (%.17g %.17g %.17g)\n",
+					    k, i, sp->x0 + i % n, py + i / n, got.dir.x, got.dir.y,
+					    got.dir.z, want.dir.x, want.dir.y, want.dir.z);
+				fail();
+			}
+		}
+	}
+}
+
 /* A block's rays made from the shared products are camera_ray's to the
  * bit, for views of every kind: default, turned and tilted, nearfar's
  * image plane and wider horizontal view, spans of 1 to 16 columns
- * anywhere in the image (its last columns too). */
+ * anywhere in the image (its last columns too); and camera_lanes's. */
 static void test_camera_span_is_camera_ray(void **state)
 {
 	static const struct {
@@ -404,6 +446,7 @@ static void test_camera_span_is_camera_ray(void **state)
 						assert_memory_equal(&rays[i].dir, &want.dir,
 								    sizeof(want.dir));
 					}
+					check_lanes(&c, &sp, py, n);
 				}
 			}
 		}
