@@ -8,8 +8,8 @@
 #define HIT_LANES_FN(name) hit_lanes_base_##name
 #include "render/hit_lanes_lanes.h"
 
-const struct hit_lanes_set hit_lanes_base = { HIT_LANES_FN(turn), HIT_LANES_FN(offsets),
-					       HIT_LANES_FN(bounce) };
+const struct hit_lanes_set hit_lanes_base = { HIT_LANES_FN(points), HIT_LANES_FN(turn),
+					       HIT_LANES_FN(offsets), HIT_LANES_FN(bounce) };
 
 static const struct hit_lanes_set *chosen(void)
 {
@@ -34,6 +34,7 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 	double *const nv[3] = { p->nx, p->ny, p->nz };
 	double *const cv[3] = { out->base[0], out->base[1], out->base[2] };
 	const double *const pc[3] = { p->px, p->py, p->pz };
+	const struct hit_lanes_set *set = chosen();
 	double d[3][HIT_LANES];
 	uint32_t left, m;
 	int i, first;
@@ -51,14 +52,8 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 
 		out->hit[i] = hit[k];
 		out->t[i] = t[k];
-		/* ray_at: vec3_add_scaled(origin, dir, t) */
-		p->px[i] = r->ox[k] + r->dx[k] * t[k];
-		p->py[i] = r->oy[k] + r->dy[k] * t[k];
-		p->pz[i] = r->oz[k] + r->dz[k] * t[k];
-		d[0][i] = r->dx[k];
-		d[1][i] = r->dy[k];
-		d[2][i] = r->dz[k];
 	}
+	set->points(r, t, out->hits, p, d);
 	/* Each shape once, for its lanes; the lanes not hit take the first
 	 * one's shape, so that every lane's values are made. */
 	for (left = ((uint32_t)1 << HIT_LANES) - 1; left;) {
@@ -96,7 +91,7 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 					out->spec |= (uint32_t)1 << b;
 			}
 	}
-	chosen()->turn(d, out);
+	set->turn(d, out);
 }
 
 void hit_lanes_point(const struct hit_lanes *h, int i, struct render_point *out)

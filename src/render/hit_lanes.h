@@ -45,11 +45,14 @@ void hit_lanes_offsets(const struct ray_packet *r, double *t_min);
 void hit_lanes_bounce(const struct hit_lanes *h, struct ray_packet *out);
 
 /* One set of instructions' vector parts (hit_lanes_lanes.h), every lane:
- * turn makes, from the directions d (a coordinate an array) and the
+ * points makes the hits' points (lanes not hit copies of the first one)
+ * and their rays' directions; turn makes, from the directions d (a coordinate an array) and the
  * normals in out->pts, d.N, N turned, R and, from the points, the
  * offsets; offsets and bounce are the functions above.  The baseline's
  * always there; the others all NULL in a file compiled without them. */
 struct hit_lanes_set {
+	void (*points)(const struct ray_packet *r, const double *t, uint32_t hits,
+		       struct light_dirs_points *out, double (*d)[HIT_LANES]);
 	void (*turn)(double (*d)[HIT_LANES], struct hit_lanes *out);
 	void (*offsets)(const struct ray_packet *r, double *t_min);
 	void (*bounce)(const struct hit_lanes *h, struct ray_packet *out);

@@ -9,8 +9,8 @@
 #define HIT_LANES_FN(name) hit_lanes_avx512_##name
 #include "render/hit_lanes_lanes.h"
 
-const struct hit_lanes_set hit_lanes_avx512 = { HIT_LANES_FN(turn), HIT_LANES_FN(offsets),
-						HIT_LANES_FN(bounce) };
+const struct hit_lanes_set hit_lanes_avx512 = { HIT_LANES_FN(points), HIT_LANES_FN(turn),
+						HIT_LANES_FN(offsets), HIT_LANES_FN(bounce) };
 #else
-const struct hit_lanes_set hit_lanes_avx512 = { NULL, NULL, NULL };
+const struct hit_lanes_set hit_lanes_avx512 = { NULL, NULL, NULL, NULL };
 #endif

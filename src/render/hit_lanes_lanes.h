@@ -76,3 +76,29 @@ static void HIT_LANES_FN(bounce)(const struct hit_lanes *h, struct ray_packet *o
 		lv_store(out->dz + j, rz);
 	}
 }
+
+/* Each hit's point (ray_at: vec3_add_scaled(origin, dir, t)) into out's
+ * points, and its ray's direction into d; the lanes not in `hits` (not
+ * 0) copies of its first lane's. */
+static void HIT_LANES_FN(points)(const struct ray_packet *r, const double *t, uint32_t hits,
+				 struct light_dirs_points *out, double (*d)[HIT_LANES])
+{
+	const double *const o_of[3] = { r->ox, r->oy, r->oz }, *const d_of[3] = { r->dx, r->dy, r->dz };
+	double *const p_of[3] = { out->px, out->py, out->pz };
+	int first = __builtin_ctz(hits), j, k;
+	const lv t0 = lv_set1(t[first]);
+
+	for (k = 0; k < 3; k++) {
+		const lv o0 = lv_set1(o_of[k][first]), d0 = lv_set1(d_of[k][first]);
+
+		for (j = 0; j < HIT_LANES; j += LANES_W) {
+			lm on = lm_from_bits(hits >> j);
+			lv dk = lv_sel(on, lv_load(d_of[k] + j), d0);
+			lv tk = lv_sel(on, lv_load(t + j), t0);
+			lv ok = lv_sel(on, lv_load(o_of[k] + j), o0);
+
+			lv_store(d[k] + j, dk);
+			lv_store(p_of[k] + j, lv_add(ok, lv_mul(dk, tk)));
+		}
+	}
+}

@@ -6,10 +6,10 @@
  * one and a textured one, mixed in one packet, with misses, random masks
  * of lanes and rays from either side; the lanes not hit copies of the
  * first one hit; and the vector parts of every set of instructions this
- * processor runs against the scalar arithmetic (the turned normal, d.N,
- * R, the offsets of points and of origins, render_bounce), with normals
- * facing either way, d.N of 0 and -0, and huge, tiny, infinite and NaN
- * values. */
+ * processor runs against the scalar arithmetic (the points, the turned
+ * normal, d.N, R, the offsets of points and of origins, render_bounce),
+ * with normals facing either way, d.N of 0 and -0, and huge, tiny,
+ * infinite and NaN values. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdlib.h>
@@ -137,6 +137,31 @@ static void check_rays(const struct hit_lanes_set *set, const char *name)
 		}
 		set->offsets(&r, t_min);
 		set->bounce(&h, &b);
+		/* points: ray_at of the hit lanes, the others the first's */
+		{
+			double t[HIT_LANES], d[3][HIT_LANES];
+			struct light_dirs_points pts;
+			uint32_t hits = (uint32_t)(support_rng() * 65535.0) + 1;
+			int first = __builtin_ctz(hits);
+
+			for (i = 0; i < HIT_LANES; i++) {
+				r.dx[i] = odd_value(), r.dy[i] = odd_value(), r.dz[i] = odd_value();
+				t[i] = support_rng() < 0.8 ? support_uniform(0, 1000) : odd_value();
+			}
+			set->points(&r, t, hits, &pts, d);
+			for (i = 0; i < HIT_LANES; i++) {
+				int k2 = hits >> i & 1 ? i : first;
+				struct ray ray = ray_packet_get(&r, k2);
+				struct vec3 at = ray_at(&ray, t[k2]);
+
+				if (!same_vec(at, vec3_make(pts.px[i], pts.py[i], pts.pz[i])) ||
+				    !same_vec(ray.dir, vec3_make(d[0][i], d[1][i], d[2][i]))) {
+					print_error("%s, lane %d (of 0x%x): point x %.17g / %.17g\n", name,
+						    i, hits, at.x, pts.px[i]);
+					fail();
+				}
+			}
+		}
 		for (i = 0; i < HIT_LANES; i++) {
 			struct render_point q;
 			struct ray want;
