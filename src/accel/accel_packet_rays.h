@@ -172,7 +172,7 @@ static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, i
 static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
 						const struct packet_rays *v, uint32_t mask,
 						const double *t_max, double (*entry)[LANES],
-						uint32_t child[4])
+						int lead, double *first, uint32_t child[4])
 {
 	const __m512 down = _mm512_set1_ps(1.0f - FLOAT_BOX_REL), up = _mm512_set1_ps(1.0f + FLOAT_BOX_REL);
 	const __m512 tn = _mm512_loadu_ps(v->t_minf), tx = rays_floats16(t_max);
@@ -206,6 +206,14 @@ static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
 			_mm512_storeu_pd(entry[c] + 8,
 					 _mm512_cvtps_pd(_mm256_castpd_ps(
 						 _mm512_extractf64x4_pd(_mm512_castps_pd(lo), 1))));
+		}
+		if (first) {
+			/* The lead lane's entry alone, which is all the order
+			 * reads: one lane out of the vector, not sixteen. */
+			float lanes[LANES];
+
+			_mm512_storeu_ps(lanes, lo);
+			first[c] = child[c] >> lead & 1 ? (double)lanes[lead] : INFINITY;
 		}
 	}
 }
@@ -262,18 +270,25 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 }
 
 /* The children's lanes by the float tests where they hold the packet,
- * else by the double ones. */
-static inline void RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct packet_rays *v,
-					uint32_t mask, const double *t_max, double (*entry)[LANES],
-					uint32_t child[4])
+ * else by the double ones; where first is not NULL, each child's entry
+ * for the packet's lead lane (the lowest of mask), INFINITY for a child
+ * that lane does not enter. */
+static inline __attribute__((always_inline)) void
+RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct packet_rays *v, uint32_t mask,
+		     const double *t_max, double *first, uint32_t child[4])
 {
+	double e[4][LANES];
+	int lead = __builtin_ctz(mask), c;
+
 #if RAYS_FLOATS
 	if (v->floats) {
-		RAYS_WALK(node_lanes_floats)(nd, v, mask, t_max, entry, child);
+		RAYS_WALK(node_lanes_floats)(nd, v, mask, t_max, NULL, lead, first, child);
 		return;
 	}
 #endif
-	RAYS_WALK(node_lanes)(nd, v, mask, t_max, entry, child);
+	RAYS_WALK(node_lanes)(nd, v, mask, t_max, first ? e : NULL, child);
+	for (c = 0; first && c < 4; c++)
+		first[c] = child[c] >> lead & 1 ? e[c][lead] : INFINITY;
 }
 
 /* The nearest hits of v's rays of `all` (not 0), loaded, from t_max[i]
@@ -302,8 +317,8 @@ static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet
 	while (top > 0) {
 		const struct bvh4_node *nd;
 		uint32_t mask, child[4];
-		double e[4][LANES], first[4];
-		int order[4], count, c, k, lead;
+		double first[4];
+		int order[4], count, c, k;
 		unsigned in_any = 0;
 		uintptr_t slot;
 
@@ -317,16 +332,13 @@ static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet
 		nd = &((const struct bvh4_node *)a->nodes)[accel_slot_index(slot)];
 		for (i = 0; i < LANES; i++)
 			bt[i] = b[i].t;
-		RAYS_WALK(node_test)(nd, v, mask, bt, e, child);
+		RAYS_WALK(node_test)(nd, v, mask, bt, first, child);
 		for (c = 0; c < 4; c++)
 			in_any |= (unsigned)(child[c] != 0) << c;
 		if (!in_any)
 			continue;
 		/* The children in the order the packet's first ray meets
 		 * them (the ones it misses last), pushed farthest first. */
-		lead = __builtin_ctz(mask);
-		for (c = 0; c < 4; c++)
-			first[c] = child[c] >> lead & 1 ? e[c][lead] : INFINITY;
 		count = order_children(in_any, first, order);
 		for (k = count - 1; k >= 0; k--) {
 			stack[top].slot = nd->slot[order[k]];

@@ -277,8 +277,8 @@ int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray 
 	rays_avx512_node_lanes(node, &v, packet_all(ACCEL_PACKET), t_max, exact_entry, exact_child);
 	if (!floats)
 		return 0;
-	rays_avx512_node_lanes_floats(node, &v, packet_all(ACCEL_PACKET), t_max, float_entry,
-				      float_child);
+	rays_avx512_node_lanes_floats(node, &v, packet_all(ACCEL_PACKET), t_max, float_entry, 0,
+				      NULL, float_child);
 	return 1;
 }
 
