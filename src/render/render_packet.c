@@ -161,8 +161,9 @@ void render_rays_packets(const struct render_job *job, const struct ray *r, int 
 	for (i = 0; i < n; i += ACCEL_PACKET) {
 		int m = n - i < ACCEL_PACKET ? n - i : ACCEL_PACKET;
 
-		for (k = 0; k < m; k++)
-			ray_packet_set(&p, k, &r[i + k]);
+		/* The lanes past the rays: copies of the first. */
+		for (k = 0; k < ACCEL_PACKET; k++)
+			ray_packet_set(&p, k, &r[i + (k < m ? k : 0)]);
 		shade_packet(job, &p, packet_lanes(m), 1, counts, out + i);
 	}
 }
