@@ -71,7 +71,9 @@
  * intersect_packet (at its end) and RT_PACKET_MAX (shape.h); 4:
  * intersect_packet takes its rays as a struct ray_packet (a coordinate an
  * array, so that a method can load a run of rays into a vector register)
- * and may read whole runs of RT_PACKET_RUN rays. */
+ * and may read whole runs of RT_PACKET_RUN rays; 5: struct shape_ops'
+ * normal_packet and color_packet (at its end), a packet's hit points'
+ * normals and colours. */
 #ifndef RT_PLUGIN_H
 #define RT_PLUGIN_H
 

@@ -210,6 +210,8 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 	int bit[ACCEL_PACKET], n = 0, i;
 	uint32_t m, packed, blocked = 0;
 
+	if (a->walk == ACCEL_WALK_AVX512)
+		return accel_avx512_rays8_occluded_lanes(a, p, active, t_min, t_max);
 	if (a->walk == ACCEL_WALK_BASE) {
 		if (a->rays == ACCEL_WALK_AVX512)
 			return accel_avx512_rays_occluded_lanes(a, p, active, t_min, t_max);
@@ -242,6 +244,10 @@ void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, ui
 	int bit[ACCEL_PACKET], n = 0, i;
 	uint32_t m;
 
+	if (a->walk == ACCEL_WALK_AVX512) {
+		accel_avx512_rays8_intersect_lanes(a, p, active, t_min, t_max, hit);
+		return;
+	}
 	if (a->walk == ACCEL_WALK_BASE) {
 		if (a->rays == ACCEL_WALK_AVX512)
 			accel_avx512_rays_intersect_lanes(a, p, active, t_min, t_max, hit);
@@ -315,7 +321,7 @@ const char *accel_packets_name(const struct accel *a)
 	if (!a || !accel_packets_wanted(a))
 		return "no packets";
 	if (a->walk != ACCEL_WALK_BASE)
-		return a->walk == ACCEL_WALK_AVX512 ? "avx512 packets, a child a lane"
+		return a->walk == ACCEL_WALK_AVX512 ? "avx512 packets, a ray a lane, few rays alone"
 						    : "avx2 packets, a child a lane";
 	return a->rays == ACCEL_WALK_BASE ? base_rays : rays[a->rays];
 }

@@ -48,8 +48,9 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 			      const double *t_min, const double *t_max);
 /* accel_intersect_packet for the rays of p's lanes in `active` (bits
  * below ACCEL_PACKET), left where they are: hit[i] and t_max[i] of those
- * lanes only (the others are not read and not written; p's may hold
- * anything).  For rays made a vector at a time (the camera's, a packet's
+ * lanes only (the others are not written, and what they hold, in p,
+ * t_min and t_max, is not used: it may be anything, the arrays must
+ * only have every lane).  For rays made a vector at a time (the camera's, a packet's
  * reflections, which keep their hits' lanes). */
 void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
 			   const double *t_min, double *t_max, const struct shape **hit);

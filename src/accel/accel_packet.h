@@ -1,6 +1,7 @@
 /* The hierarchy's walks for packets of up to ACCEL_PACKET rays, written
- * once for each set of box tests as accel_walk.h is (and included after
- * it).  A packet goes down the tree together: a node's boxes are tested
+ * once for a set of box tests as accel_walk.h is (and included after it:
+ * the AVX2 walk's; the AVX-512 walk's packets go a ray a lane instead,
+ * accel_packet_rays.h).  A packet goes down the tree together: a node's boxes are tested
  * for each of its rays, and each child is entered once, for the rays that
  * meet it, in the order the packet's first ray meets them.  Every ray gets
  * what the single-ray walk gives it, to the bit: the nearest hit with the

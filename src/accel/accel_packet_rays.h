@@ -26,6 +26,13 @@
 #include "base/lanes.h"
 
 #define LANES ACCEL_PACKET
+/* The node the walks take, and its width: the four-child tree's unless
+ * the including file says otherwise (the AVX-512 walk's eight-child
+ * tree). */
+#ifndef RAYS_NODE
+#define RAYS_NODE struct bvh4_node
+#define RAYS_W 4
+#endif
 
 #ifndef RT_ACCEL_PACKET_RAYS_COMMON
 #define RT_ACCEL_PACKET_RAYS_COMMON
@@ -45,6 +52,8 @@ struct packet_rays {
 
 #if defined(__AVX512F__) && !defined(ACCEL_PORTABLE) && ACCEL_PACKET == 16
 #define RAYS_FLOATS 1
+#ifndef RT_ACCEL_PACKET_RAYS_FLOATS16
+#define RT_ACCEL_PACKET_RAYS_FLOATS16
 /* Sixteen doubles to the nearest floats, by the processor's conversion
  * (which takes a finite value beyond the floats' range to +-inf). */
 static inline __m512 rays_floats16(const double *v)
@@ -54,6 +63,7 @@ static inline __m512 rays_floats16(const double *v)
 	return _mm512_castpd_ps(_mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_castps_pd(lo)),
 						   _mm256_castps_pd(hi), 1));
 }
+#endif
 #else
 #define RAYS_FLOATS 0
 #endif
@@ -169,10 +179,10 @@ static inline void RAYS_WALK(load)(struct packet_rays *v, const struct ray *r, i
  * is entered, at an entry no later; so the walks meet a superset of the
  * shapes, and give the same answers.  For packets whose every lane the
  * float tests hold (v->floats). */
-static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
+static inline void RAYS_WALK(node_lanes_floats)(const RAYS_NODE *nd,
 						const struct packet_rays *v, uint32_t mask,
 						const double *t_max, double (*entry)[LANES],
-						int lead, double *first, uint32_t child[4])
+						int lead, double *first, uint32_t child[RAYS_W])
 {
 	const __m512 down = _mm512_set1_ps(1.0f - FLOAT_BOX_REL), up = _mm512_set1_ps(1.0f + FLOAT_BOX_REL);
 	const __m512 tn = _mm512_loadu_ps(v->t_minf), tx = rays_floats16(t_max);
@@ -184,7 +194,7 @@ static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
 		o[k] = _mm512_loadu_ps(v->of[k]);
 		inv[k] = _mm512_loadu_ps(v->invf[k]);
 	}
-	for (c = 0; c < 4; c++) {
+	for (c = 0; c < RAYS_W; c++) {
 		__m512 lo = tn, hi = tx;
 
 		child[c] = 0;
@@ -225,15 +235,15 @@ static inline void RAYS_WALK(node_lanes_floats)(const struct bvh4_node *nd,
  * children go together, a group of lanes at a time: their tests are
  * independent, so they overlap, where one child after another waited on
  * each test's chain of maxima and minima. */
-static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struct packet_rays *v,
+static inline void RAYS_WALK(node_lanes)(const RAYS_NODE *nd, const struct packet_rays *v,
 					 uint32_t mask, const double *t_max, double (*entry)[LANES],
-					 uint32_t child[4])
+					 uint32_t child[RAYS_W])
 {
 	const lv zero = lv_set1(0.0);
 	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
 	int j, k, c;
 
-	for (c = 0; c < 4; c++)
+	for (c = 0; c < RAYS_W; c++)
 		child[c] = 0;
 	for (j = 0; j < LANES; j += LANES_W) {
 		lv o[3], inv[3], tn, tx;
@@ -248,7 +258,7 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 			inv[k] = lv_load(v->inv[k] + j);
 			far_first[k] = lv_lt(inv[k], zero);
 		}
-		for (c = 0; c < 4; c++) {
+		for (c = 0; c < RAYS_W; c++) {
 			lv lo = tn, hi = tx;
 
 			if (!nd->slot[c])
@@ -265,7 +275,7 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
 			child[c] |= (uint32_t)lm_bits(lv_le(lo, hi)) << j;
 		}
 	}
-	for (c = 0; c < 4; c++)
+	for (c = 0; c < RAYS_W; c++)
 		child[c] &= mask;
 }
 
@@ -274,10 +284,9 @@ static inline void RAYS_WALK(node_lanes)(const struct bvh4_node *nd, const struc
  * for the packet's lead lane (the lowest of mask), INFINITY for a child
  * that lane does not enter. */
 static inline __attribute__((always_inline)) void
-RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct packet_rays *v, uint32_t mask,
-		     const double *t_max, double *first, uint32_t child[4])
+RAYS_WALK(node_test)(const RAYS_NODE *nd, const struct packet_rays *v, uint32_t mask,
+		     const double *t_max, double *first, uint32_t child[RAYS_W])
 {
-	double e[4][LANES];
 	int lead = __builtin_ctz(mask), c;
 
 #if RAYS_FLOATS
@@ -286,9 +295,13 @@ RAYS_WALK(node_test)(const struct bvh4_node *nd, const struct packet_rays *v, ui
 		return;
 	}
 #endif
-	RAYS_WALK(node_lanes)(nd, v, mask, t_max, first ? e : NULL, child);
-	for (c = 0; first && c < 4; c++)
-		first[c] = child[c] >> lead & 1 ? e[c][lead] : INFINITY;
+	{
+		double e[RAYS_W][LANES];
+
+		RAYS_WALK(node_lanes)(nd, v, mask, t_max, first ? e : NULL, child);
+		for (c = 0; first && c < RAYS_W; c++)
+			first[c] = child[c] >> lead & 1 ? e[c][lead] : INFINITY;
+	}
 }
 
 /* The nearest hits of v's rays of `all` (not 0), loaded, from t_max[i]
@@ -315,10 +328,10 @@ static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet
 		stack[top++].mask = all;
 	}
 	while (top > 0) {
-		const struct bvh4_node *nd;
-		uint32_t mask, child[4];
-		double first[4];
-		int order[4], count, c, k;
+		const RAYS_NODE *nd;
+		uint32_t mask, child[RAYS_W];
+		double first[RAYS_W];
+		int order[RAYS_W], count, c, k;
 		unsigned in_any = 0;
 		uintptr_t slot;
 
@@ -329,14 +342,25 @@ static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet
 			packet_leaf_nearest(a, slot, &v->s, mask, b);
 			continue;
 		}
-		nd = &((const struct bvh4_node *)a->nodes)[accel_slot_index(slot)];
+#ifdef RAYS_SINGLE_MAX
+		/* A few rays left: on alone, each by its single walk. */
+		if (__builtin_popcount(mask) <= RAYS_SINGLE_MAX) {
+			for (m = mask; m; m &= m - 1)
+				RAYS_LANE_NEAREST(a, accel_slot_index(slot), v, __builtin_ctz(m),
+						  &b[__builtin_ctz(m)]);
+			continue;
+		}
+#endif
+		nd = &((const RAYS_NODE *)a->nodes)[accel_slot_index(slot)];
 		for (i = 0; i < LANES; i++)
 			bt[i] = b[i].t;
 		RAYS_WALK(node_test)(nd, v, mask, bt, first, child);
-		for (c = 0; c < 4; c++)
+		for (c = 0; c < RAYS_W; c++)
 			in_any |= (unsigned)(child[c] != 0) << c;
 		if (!in_any)
 			continue;
+		if (RAYS_W > 4)
+			prefetch_children(a, nd->slot, in_any, sizeof(*nd));
 		/* The children in the order the packet's first ray meets
 		 * them (the ones it misses last), pushed farthest first. */
 		count = order_children(in_any, first, order);
@@ -417,17 +441,35 @@ static uint32_t RAYS_WALK(occluded_rays)(const struct accel *a, const struct pac
 	stack[top].node = 0;
 	stack[top++].mask = open;
 	while (top > 0) {
-		const struct bvh4_node *nd;
-		uint32_t mask, child[4];
+		const RAYS_NODE *nd;
+		uint32_t mask, child[RAYS_W];
 		int c;
 
 		top--;
 		mask = stack[top].mask & open;
 		if (!mask)
 			continue;
-		nd = &((const struct bvh4_node *)a->nodes)[stack[top].node];
+#ifdef RAYS_SINGLE_MAX
+		if (__builtin_popcount(mask) <= RAYS_SINGLE_MAX) {
+			uint32_t m;
+			for (m = mask; m; m &= m - 1)
+				if (RAYS_LANE_OCCLUDED(a, stack[top].node, v, __builtin_ctz(m),
+						       t_far[__builtin_ctz(m)]))
+					open &= ~((uint32_t)1 << __builtin_ctz(m));
+			if (!open)
+				return all;
+			continue;
+		}
+#endif
+		nd = &((const RAYS_NODE *)a->nodes)[stack[top].node];
 		RAYS_WALK(node_test)(nd, v, mask, t_far, NULL, child);
-		for (c = 0; c < 4; c++) {
+		if (RAYS_W > 4) {
+			unsigned in_any = 0;
+			for (c = 0; c < RAYS_W; c++)
+				in_any |= (unsigned)(child[c] != 0) << c;
+			prefetch_children(a, nd->slot, in_any, sizeof(*nd));
+		}
+		for (c = 0; c < RAYS_W; c++) {
 			uintptr_t s = nd->slot[c];
 			uint32_t in = child[c] & open;
 
@@ -480,3 +522,6 @@ static uint32_t RAYS_WALK(occluded_lanes)(const struct accel *a, const struct ra
 }
 #undef LANES
 #undef RAYS_FLOATS
+#undef RAYS_NODE
+#undef RAYS_W
+#undef RAYS_SINGLE_MAX

@@ -231,6 +231,16 @@ uint32_t accel_avx2_rays_occluded_lanes(const struct accel *a, const struct ray_
 uint32_t accel_avx512_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 					  uint32_t active, const double *t_min,
 					  const double *t_max);
+/* The packets through the AVX-512 walk's eight-child tree, a ray a
+ * vector lane (accel_packet_rays.h over struct bvh8_node; its
+ * intersect_packet and occluded_packet are these too): the contracts of
+ * accel_occluded_lanes and accel_intersect_lanes. */
+uint32_t accel_avx512_rays8_occluded_lanes(const struct accel *a, const struct ray_packet *p,
+					   uint32_t active, const double *t_min,
+					   const double *t_max);
+void accel_avx512_rays8_intersect_lanes(const struct accel *a, const struct ray_packet *p,
+					uint32_t active, const double *t_min, double *t_max,
+					const struct shape **hit);
 /* accel_intersect_lanes's contract, a ray a vector lane likewise. */
 void accel_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
 				uint32_t active, const double *t_min, double *t_max,

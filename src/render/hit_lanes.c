@@ -35,6 +35,7 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 	double *const cv[3] = { out->base[0], out->base[1], out->base[2] };
 	const double *const pc[3] = { p->px, p->py, p->pz };
 	const struct hit_lanes_set *set = chosen();
+	const uint32_t all = ((uint32_t)1 << HIT_LANES) - 1;
 	double d[3][HIT_LANES];
 	uint32_t left, m;
 	int i, first;
@@ -54,9 +55,8 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 		out->t[i] = t[k];
 	}
 	set->points(r, t, out->hits, p, d);
-	/* Each shape once, for its lanes; the lanes not hit take the first
-	 * one's shape, so that every lane's values are made. */
-	for (left = ((uint32_t)1 << HIT_LANES) - 1; left;) {
+	/* Each shape once, for its lanes hit. */
+	for (left = out->hits; left;) {
 		const struct shape *s = out->hit[__builtin_ctz(left)];
 		uint32_t same = 0;
 
@@ -64,7 +64,9 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 			if (out->hit[__builtin_ctz(m)] == s)
 				same |= (uint32_t)1 << __builtin_ctz(m);
 		left &= ~same;
-		if (same == ((uint32_t)1 << HIT_LANES) - 1) {
+		/* One shape for every hit: its methods' writes past them are
+		 * overwritten below. */
+		if (same == out->hits) {
 			shape_normal_packet(s, pc, same, nv);
 			shape_color_packet(s, pc, same, cv);
 		} else {
@@ -83,13 +85,20 @@ void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t
 					cv[k][__builtin_ctz(m)] = c_own[k][__builtin_ctz(m)];
 				}
 		}
-		if (s->ops->specular_color_at)
-			for (m = same & out->hits; m; m &= m - 1) {
-				int b = __builtin_ctz(m);
-				if (shape_specular_color_at(s, vec3_make(p->px[b], p->py[b], p->pz[b]),
-							    &out->spec_color[b]))
-					out->spec |= (uint32_t)1 << b;
-			}
+		for (m = same; m; m &= m - 1) {
+			int b = __builtin_ctz(m);
+			if (shape_specular_color_at(s, vec3_make(p->px[b], p->py[b], p->pz[b]),
+						    &out->spec_color[b]))
+				out->spec |= (uint32_t)1 << b;
+		}
+	}
+	/* The lanes not hit: the first one's values, as its copies. */
+	for (m = all & ~out->hits; m; m &= m - 1) {
+		int b = __builtin_ctz(m), k;
+		for (k = 0; k < 3; k++) {
+			nv[k][b] = nv[k][first];
+			cv[k][b] = cv[k][first];
+		}
 	}
 	set->turn(d, out);
 }

@@ -24,6 +24,12 @@
 
 #define PACKET_SIDE 4	/* PACKET_SIDE^2 <= ACCEL_PACKET */
 
+/* A packet's lanes are the walks', the camera's and the hits' alike. */
+typedef char packet_lanes_agree[ACCEL_PACKET == CAMERA_LANES && ACCEL_PACKET == HIT_LANES &&
+						PACKET_SIDE * PACKET_SIDE <= ACCEL_PACKET
+					? 1
+					: -1];
+
 /* The lanes [0, n). */
 static uint32_t packet_lanes(int n)
 {
@@ -96,10 +102,6 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
 static void shade_packet(const struct render_job *job, const struct ray_packet *r,
 			 uint32_t active, int level, struct ray_counts *counts, struct color *out)
 {
-	static const double far[ACCEL_PACKET] = { INFINITY, INFINITY, INFINITY, INFINITY,
-						  INFINITY, INFINITY, INFINITY, INFINITY,
-						  INFINITY, INFINITY, INFINITY, INFINITY,
-						  INFINITY, INFINITY, INFINITY, INFINITY };
 	const struct scene *sc = job->scene;
 	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
@@ -113,7 +115,8 @@ static void shade_packet(const struct render_job *job, const struct ray_packet *
 	int i;
 
 	hit_lanes_offsets(r, t_min);
-	memcpy(t, far, sizeof(t));
+	for (i = 0; i < ACCEL_PACKET; i++)
+		t[i] = INFINITY;
 	accel_intersect_lanes(sc->accel, r, active, t_min, t, hit);
 	hit_lanes_fill(r, active, t, hit, &h);
 	if (level < depth)

@@ -66,13 +66,19 @@ static void check_lanes_with(const struct accel *a, const struct ray *r, int n,
 	int ray_of[ACCEL_PACKET], i;
 	uint32_t active = 0, blocked;
 
+	/* Dense masks, sparse ones, one lane, the upper run alone (as a
+	 * packet's reflections have them). */
+	double u = support_rng(), dense = u < 0.4 ? 0.8 : u < 0.7 ? 0.25 : 0.0;
+	int one = (int)(support_rng() * ACCEL_PACKET);
+
 	memset(&p, 0, sizeof(p));
 	for (i = 0; i < ACCEL_PACKET; i++) {
 		int k = (int)(support_rng() * n) % n;
 		struct ray copy = r[k];
 
 		ray_of[i] = k;
-		if (support_rng() < 0.8)
+		if (u < 0.7 ? support_rng() < dense
+			    : u < 0.85 ? i == one : i >= 8 && support_rng() < 0.6)
 			active |= (uint32_t)1 << i;
 		ray_packet_set(&p, i, &copy);
 		lo[i] = t_min[k];
