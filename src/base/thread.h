@@ -1,4 +1,5 @@
-/* Starting a worker thread with a stack of a known size.  The default is
+/* Starting a worker thread with a stack of a known size (and the vector
+ * level, base/simd.h, already resolved).  The default is
  * the process's stack limit on glibc but 2 MiB when that limit is
  * unlimited, and 128 KiB on musl; a packet's recursive shading and the
  * hierarchy walks need some hundred kilobytes at the deepest recursion,
