@@ -21,7 +21,7 @@ int image_alloc(struct image *img, int width, int height, struct diag *d)
 	img->pixels = NULL;
 	if (width < 1 || height < 1)
 		return diag_fail(d, RT_E_INVALID, "bad image size %dx%d", width, height);
-	img->pixels = rt_calloc((size_t)width * (size_t)height, 3);
+	img->pixels = rt_calloc_huge((size_t)width * (size_t)height, 3);
 	if (!img->pixels)
 		return diag_fail(d, RT_E_NOMEM, "out of memory for a %dx%d image",
 				width, height);

@@ -4,6 +4,7 @@
  * (LeakSanitizer checks at exit); none may crash.  And rendering
  * allocates nothing at all. */
 #define _POSIX_C_SOURCE 200809L
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -324,6 +325,37 @@ static void test_alloc_aligned(void **state)
 	rt_alloc_fail_from(0);
 }
 
+/* Big zeroed buffers: small ones as rt_calloc, big ones aligned to the
+ * huge page and zeroed to the last byte (the image's size of a 1536 px
+ * render among them), overflow and the failure switch refuse, rt_free
+ * frees either. */
+static void test_alloc_calloc_huge(void **state)
+{
+	static const size_t sizes[] = {1, 4096, ((size_t)2 << 20) - 1, (size_t)2 << 20,
+				       (size_t)1536 * 1536 * 3, ((size_t)6 << 20) + 1};
+	size_t k, i;
+
+	(void)state;
+	for (k = 0; k < sizeof(sizes) / sizeof(sizes[0]); k++) {
+		unsigned char *p = rt_calloc_huge(sizes[k], 1);
+
+		assert_non_null(p);
+		if (sizes[k] >= (size_t)2 << 20)
+			assert_int_equal((uintptr_t)p % ((size_t)2 << 20), 0);
+		for (i = 0; i < sizes[k]; i++)
+			if (p[i] != 0)
+				fail_msg("byte %zu of %zu is %d", i, sizes[k], p[i]);
+		memset(p, 0xa5, sizes[k]);
+		rt_free(p);
+	}
+	assert_null(rt_calloc_huge(SIZE_MAX / 2, 4));
+	assert_null(rt_calloc_huge(SIZE_MAX, 1));
+	rt_alloc_fail_from(1);
+	assert_null(rt_calloc_huge((size_t)4 << 20, 1));
+	assert_null(rt_calloc_huge(10, 10));
+	rt_alloc_fail_from(0);
+}
+
 static void test_alloc_counter(void **state)
 {
 	void *p;
@@ -363,6 +395,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_alloc_sweep_prepare_again),
 		cmocka_unit_test(test_alloc_sweep_scene_load),
 		cmocka_unit_test(test_alloc_sweep_test_scene_and_cli_load),
+		cmocka_unit_test(test_alloc_calloc_huge),
 		cmocka_unit_test(test_alloc_image),
 		cmocka_unit_test(test_alloc_image_write),
 		cmocka_unit_test(test_alloc_render_allocates_nothing),
