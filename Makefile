@@ -33,8 +33,15 @@ WARN := -std=c99 -Wall -Wextra -Wpedantic -Wmissing-prototypes
 FP := -ffp-contract=off
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
-ALL_CFLAGS := $(WARN) $(FP) $(CFLAGS) -Iinclude -Isrc $(PNG_CFLAGS) -pthread -MMD -MP
-LDLIBS := $(PNG_LIBS) -lz -lm -pthread
+# The PNG's deflate: Intel's ISA-L where its header is found (Debian's
+# libisal-dev, which `make render` and `make deps` install where Debian
+# has it), seven times as fast as zlib's level 1; zlib otherwise
+# (src/image/png_deflate.h).
+HAVE_ISAL := $(shell printf '\043include <isa-l/igzip_lib.h>\n' | $(CC) -E -x c - >/dev/null 2>&1 && echo yes)
+DEFLATE_CFLAGS := $(if $(HAVE_ISAL),-DRT_HAVE_ISAL)
+DEFLATE_LIBS := $(if $(HAVE_ISAL),-lisal)
+ALL_CFLAGS := $(WARN) $(FP) $(CFLAGS) -Iinclude -Isrc $(PNG_CFLAGS) $(DEFLATE_CFLAGS) -pthread -MMD -MP
+LDLIBS := $(PNG_LIBS) $(DEFLATE_LIBS) -lz -lm -pthread
 # The sanitized build is the test build: it also has the allocator's
 # failure switch (RT_TEST_HOOKS), which the installed library leaves out.
 SAN := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer \
@@ -44,6 +51,9 @@ VERSION := $(shell sed -n 's/^\#define RT_VERSION "\(.*\)"/\1/p' include/whitted
 # Debian packages: the build's, the suites' (make check installs them as
 # root), and the benchmark's.
 CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libcmocka-dev libstb-dev
+# Offered to every build, not required: the faster PNG deflate (zlib is
+# the fallback where Debian has no ISA-L for the architecture).
+FAST_PKGS := libisal-dev
 CHECK_PKGS := $(CORE_PKGS) valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
@@ -94,7 +104,7 @@ SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-re
 	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
 	install-test newshape plugintest embreecheck
 
-.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images plugins $(SUITES)
+.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images plugins FORCE $(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
 $(BUILD)/%.o: %.c
@@ -124,6 +134,16 @@ ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
 # multiply-adds (every processor with AVX-512 has them; base/simd.c asks).
 %/accel/accel_walk_avx512.o: ALL_CFLAGS += -mfma
 endif
+
+# The deflate's two files are compiled anew when the library the build
+# found changes (libisal-dev installed or removed since the last build).
+DEFLATE_OBJ := $(foreach d,$(BUILD) $(BUILD)/san $(BUILD)/fuzz,\
+	$(d)/src/image/png_deflate_isal.o $(d)/src/image/png_deflate_zlib.o)
+$(DEFLATE_OBJ): $(BUILD)/deflate.flags
+$(BUILD)/deflate.flags: FORCE
+	@mkdir -p $(@D)
+	@echo '$(DEFLATE_CFLAGS)' | cmp -s - $@ || echo '$(DEFLATE_CFLAGS)' > $@
+FORCE:
 
 $(BUILD)/libwhitted.a: $(LIB_OBJ)
 	@rm -f $@
@@ -206,12 +226,14 @@ check: check-deps
 
 check-deps:
 	@scripts/deps.sh $(CHECK_PKGS)
+	@scripts/deps.sh --optional $(FAST_PKGS)
 
 deps: check-deps
 	@scripts/deps.sh --optional $(BENCH_PKGS) $(BENCH_OPT_PKGS)
 
 render:
 	@scripts/deps.sh $(CORE_PKGS)
+	@scripts/deps.sh --optional $(FAST_PKGS)
 	@$(MAKE) --no-print-directory all
 	@mkdir -p out
 	$(BUILD)/whitted -o out/scene.png scenes/scene.txt
@@ -319,7 +341,8 @@ install: all plugins
 		$(DESTDIR)$(PREFIX)/include/whitted $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(PROGRAMS:%=$(BUILD)/%) $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 $(BUILD)/libwhitted.a $(DESTDIR)$(PREFIX)/lib/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' whitted.pc.in \
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' \
+		-e 's|@DEFLATE_LIBS@ |$(DEFLATE_LIBS:%=% )|g' whitted.pc.in \
 		> $(DESTDIR)$(PREFIX)/lib/pkgconfig/whitted.pc
 	install -m 644 include/whitted/*.h $(DESTDIR)$(PREFIX)/include/whitted/
 	$(if $(MAN_PAGES),install -m 644 $(MAN_PAGES) $(DESTDIR)$(PREFIX)/share/man/man1/)

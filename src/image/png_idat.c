@@ -1,19 +1,20 @@
 /* The image data of whitted's PNGs, made for speed.  Each row is filtered
  * with PNG's Up filter (the difference from the row above: a rendered
  * picture is mostly smooth, so most bytes become small or zero) and the
- * rows are compressed by zlib at level 1 in strips of PNG_IDAT_STRIP_ROWS
- * rows, each strip by one of several threads: every strip but the last
- * ends with a sync flush (an empty stored block that ends on a byte), so
- * the raw deflate streams of the strips, one after the other, are one
- * valid stream; their Adler-32 checksums are combined into the stream's.
+ * rows are compressed in strips of PNG_IDAT_STRIP_ROWS rows, each strip
+ * by one of several threads, on its own (png_deflate.h: ISA-L, or zlib at
+ * level 1): every strip but the last ends on a byte and not final, so the
+ * raw deflate streams of the strips, one after the other, are one valid
+ * stream; their Adler-32 checksums are combined into the stream's.
  * The strips are fixed by the image's height alone, so the file is the
  * same byte for byte whatever the number of threads, and whichever thread
  * compresses a strip: a renderer may hand each strip over as soon as its
  * rows are final (png_idat_strips_band_done, from its own threads), so
  * that the compression runs beside the render; the strips left over are
- * compressed when the file is written.  At 1536x1536 this takes a quarter
- * of the time of libpng's fastest setting (no filter, zlib level 3, one
- * thread) for a file about as small.  libpng then writes the
+ * compressed when the file is written.  At 1536x1536 zlib's level 1 so
+ * took a quarter of the time of libpng's fastest setting (no filter, zlib
+ * level 3, one thread) for a file about as small; ISA-L takes a seventh of
+ * zlib's.  libpng then writes the
  * chunks; its errors come back through a setjmp confined to
  * png_idat_guard, as in dist/tile_png.c. */
 #define _POSIX_C_SOURCE 200809L
@@ -27,6 +28,7 @@
 #include <zlib.h>
 
 #include "base/alloc.h"
+#include "image/png_deflate.h"
 #include "image/png_idat.h"
 
 #define PNG_IDAT_MAX_THREADS 8
@@ -36,20 +38,16 @@
 struct png_idat_strip {
 	unsigned char *out;
 	size_t cap, len;
-	uLong adler;
+	uint32_t adler;
 	int status;		/* 0, or RT_E_NOMEM when zlib had no memory */
 	bool done;		/* compressed, well or not (status says) */
 	int bands_final;	/* how many of the bands it needs are final */
 };
 
-/* One thread's compressor, kept from strip to strip: the deflate state is
- * reset rather than made anew (deflateInit2 itself ends in deflateReset,
- * so the stream is the same; the ~270 KiB of state are not allocated,
- * faulted in and freed again for every strip), and the buffer of one
- * strip's filtered rows. */
+/* One thread's compressor, kept from strip to strip, and the buffer of
+ * one strip's filtered rows. */
 struct png_idat_coder {
-	z_stream z;
-	bool z_ready;
+	struct png_deflate *def;
 	unsigned char *filtered;
 };
 
@@ -62,18 +60,6 @@ struct png_idat_strips {
 	pthread_mutex_t lock;	/* over the strips' bands_final */
 	int next;		/* atomic: the next strip a finishing thread looks at */
 };
-
-static voidpf png_idat_zalloc(voidpf opaque, uInt items, uInt size)
-{
-	(void)opaque;
-	return rt_reallocarray(NULL, items, size);
-}
-
-static void png_idat_zfree(voidpf opaque, voidpf p)
-{
-	(void)opaque;
-	rt_free(p);
-}
 
 /* Rows [y0, y1) with the Up filter: filtered[x] = row[x] - above[x]
  * (mod 256), the row above the image's first being zero.  Eight bytes at
@@ -116,22 +102,15 @@ static int png_idat_coder_ready(struct png_idat_coder *c, size_t bytes)
 {
 	if (!c->filtered && !(c->filtered = rt_malloc(bytes)))
 		return RT_E_NOMEM;
-	if (c->z_ready)
-		return deflateReset(&c->z) == Z_OK ? 0 : RT_E_NOMEM;
-	memset(&c->z, 0, sizeof(c->z));
-	c->z.zalloc = png_idat_zalloc;
-	c->z.zfree = png_idat_zfree;
-	if (deflateInit2(&c->z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-		return RT_E_NOMEM;
-	c->z_ready = true;
+	if (!c->def)
+		return png_deflate_new(&c->def);
 	return 0;
 }
 
 static void png_idat_coder_free(struct png_idat_coder *c)
 {
-	if (c->z_ready)
-		deflateEnd(&c->z);
-	c->z_ready = false;
+	png_deflate_free(c->def);
+	c->def = NULL;
 	rt_free(c->filtered);
 	c->filtered = NULL;
 }
@@ -142,7 +121,6 @@ static void png_idat_strip_run(struct png_idat_strips *st, int s, struct png_ida
 	size_t line = (size_t)st->img->width * 3 + 1;
 	int y0 = s * PNG_IDAT_STRIP_ROWS, y1 = y0 + PNG_IDAT_STRIP_ROWS;
 	size_t bytes;
-	int rc;
 
 	if (y1 > st->img->height)
 		y1 = st->img->height;
@@ -153,17 +131,9 @@ static void png_idat_strip_run(struct png_idat_strips *st, int s, struct png_ida
 		return;
 	}
 	png_idat_filter(st->img, c->filtered, y0, y1);
-	strip->adler = adler32(adler32(0, Z_NULL, 0), c->filtered, (uInt)bytes);
-	c->z.next_in = c->filtered;
-	c->z.avail_in = (uInt)bytes;
-	c->z.next_out = strip->out;
-	c->z.avail_out = (uInt)strip->cap;
-	rc = deflate(&c->z, s == st->n_strips - 1 ? Z_FINISH : Z_SYNC_FLUSH);
-	/* The buffer holds deflateBound's worst case and more, so one call
-	 * always finishes. */
-	strip->status = (rc == Z_STREAM_END || (rc == Z_OK && c->z.avail_in == 0 && c->z.avail_out > 0))
-				? 0 : RT_E_NOMEM;
-	strip->len = strip->cap - c->z.avail_out;
+	strip->adler = png_deflate_adler32(1, c->filtered, bytes);
+	strip->status = png_deflate_strip(c->def, c->filtered, bytes, s == st->n_strips - 1,
+					  strip->out, strip->cap, &strip->len);
 }
 
 void png_idat_strips_free(struct png_idat_strips *st)
@@ -204,9 +174,7 @@ int png_idat_strips_open(const struct image *img, int threads, struct png_idat_s
 	if (!st->strips || !st->coders)
 		goto out_nomem;
 	for (s = 0; s < st->n_strips; s++) {
-		/* compressBound covers a zlib stream of the strip; the sync
-		 * flush's empty stored block needs 5 bytes more. */
-		st->strips[s].cap = compressBound((uLong)(line * PNG_IDAT_STRIP_ROWS)) + 16;
+		st->strips[s].cap = png_deflate_bound(line * PNG_IDAT_STRIP_ROWS);
 		st->strips[s].out = rt_malloc(st->strips[s].cap);
 		if (!st->strips[s].out)
 			goto out_nomem;
@@ -296,7 +264,7 @@ static void png_idat_run_rest(struct png_idat_strips *st)
 static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
 {
 	size_t total = 2 + 4, pos = 2, line = (size_t)st->img->width * 3 + 1;
-	uLong adler = adler32(0, Z_NULL, 0);
+	uLong adler = 1;
 	int s;
 
 	for (s = 0; s < st->n_strips; s++) {
