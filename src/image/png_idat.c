@@ -26,6 +26,9 @@
 #include <string.h>
 #include <unistd.h>
 #include <zlib.h>
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+#include <emmintrin.h>
+#endif
 
 #include "base/alloc.h"
 #include "image/png_deflate.h"
@@ -62,11 +65,12 @@ struct png_idat_strips {
 };
 
 /* Rows [y0, y1) with the Up filter: filtered[x] = row[x] - above[x]
- * (mod 256), the row above the image's first being zero.  Eight bytes at
- * a time in a 64-bit word: (a | H) - (b & ~H) subtracts the low seven
- * bits of each byte with no borrow into the next byte (each byte of it is
- * 128 + a7 - b7, in [1, 255]), and the top bit of the byte's difference
- * is then that bit flipped when a's and b's top bits are equal. */
+ * (mod 256), the row above the image's first being zero.  Sixteen bytes
+ * at a time with SSE2 (x86-64's baseline), else eight at a time in a
+ * 64-bit word: (a | H) - (b & ~H) subtracts the low seven bits of each
+ * byte with no borrow into the next byte (each byte of it is 128 + a7 -
+ * b7, in [1, 255]), and the top bit of the byte's difference is then that
+ * bit flipped when a's and b's top bits are equal. */
 static void png_idat_filter(const struct image *img, unsigned char *filtered, int y0, int y1)
 {
 	const uint64_t high = 0x8080808080808080u;
@@ -84,7 +88,14 @@ static void png_idat_filter(const struct image *img, unsigned char *filtered, in
 			continue;
 		}
 		above = row - stride;
-		for (x = 0; x + 8 <= stride; x += 8) {
+		x = 0;
+#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
+		for (; x + 16 <= stride; x += 16)
+			_mm_storeu_si128((__m128i *)(o + 1 + x),
+					 _mm_sub_epi8(_mm_loadu_si128((const __m128i *)(row + x)),
+						      _mm_loadu_si128((const __m128i *)(above + x))));
+#endif
+		for (; x + 8 <= stride; x += 8) {
 			uint64_t a, b, diff;
 
 			memcpy(&a, row + x, 8);
