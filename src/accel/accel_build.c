@@ -265,7 +265,7 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 	if (bytes < n_shapes * sizeof(*b->refs))
 		bytes = n_shapes * sizeof(*b->refs);
 	count = (bytes + n_shapes * sizeof(*b->order) + sizeof(*b->refs) - 1) / sizeof(*b->refs);
-	b->refs = rt_aligned_array(ACCEL_NODE_ALIGN, count, sizeof(*b->refs));
+	b->refs = rt_array_huge(ACCEL_NODE_ALIGN, count, sizeof(*b->refs));
 	if (!b->refs)
 		return -RT_E_NOMEM;
 	b->refs_bytes = bytes;
@@ -298,7 +298,7 @@ static int collect_refs(struct shape *const *shapes, size_t n_shapes, int thread
 static int leaf_order(struct accel *a, const struct build *b, struct shape *const *shapes)
 {
 	size_t n = a->n_bounded, i;
-	void *block = rt_reallocarray(NULL, n, sizeof(*a->bounded) + sizeof(*a->bounded_key));
+	void *block = rt_array_huge(sizeof(void *), n, sizeof(*a->bounded) + sizeof(*a->bounded_key));
 
 	if (!block)
 		return -RT_E_NOMEM;
@@ -356,7 +356,7 @@ int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
 	if (a->n_bounded > 0) {
 		size_t cap = a->n_bounded > 1 ? a->n_bounded - 1 : 1, i;
 		void *nodes;
-		b.nodes = rt_reallocarray(NULL, cap, sizeof(*b.nodes));
+		b.nodes = rt_array_huge(sizeof(void *), cap, sizeof(*b.nodes));
 		if (!b.nodes)
 			goto out_free;
 		build_root(&b, a->n_bounded, threads);

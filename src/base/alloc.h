@@ -19,10 +19,13 @@ void *rt_aligned_array(size_t align, size_t count, size_t size);
  * aligned one could be had (then the moved, unaligned block). */
 void *rt_aligned_shrink(void *p, size_t align, size_t count, size_t size);
 void rt_free(void *p);
-/* rt_calloc for a big buffer written end to end: from 2 MiB on, aligned
- * to 2 MiB and advised to live in huge pages (Linux's transparent huge
- * pages; elsewhere plain pages), one fault a huge page, not 512.  Freed
- * by rt_free. */
+/* rt_aligned_array for a big block written end to end: from 32 MiB on,
+ * aligned to 2 MiB and advised to live in huge pages (Linux's
+ * transparent huge pages; elsewhere plain pages), one fault a huge page,
+ * not 512.  align as rt_aligned_array's, at most 2 MiB.  Freed by rt_free
+ * (and shrunk by rt_aligned_shrink). */
+void *rt_array_huge(size_t align, size_t count, size_t size);
+/* rt_calloc so, from 2 MiB on, for a block written whole (an image). */
 void *rt_calloc_huge(size_t count, size_t size);
 /* Gives the pages of freed memory back to the system where the C library
  * can (glibc's malloc_trim), so that a big phase's temporaries (the

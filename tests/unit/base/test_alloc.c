@@ -356,6 +356,38 @@ static void test_alloc_calloc_huge(void **state)
 	rt_alloc_fail_from(0);
 }
 
+/* Big arrays: from 32 MiB on aligned to the huge page, below it to the
+ * alignment asked; writable to the last byte; overflow and the failure
+ * switch refuse; rt_aligned_shrink keeps the elements. */
+static void test_alloc_array_huge(void **state)
+{
+	static const size_t sizes[] = {256, ((size_t)32 << 20) - 64, (size_t)32 << 20,
+				       ((size_t)40 << 20) + 64};
+	size_t k;
+
+	(void)state;
+	for (k = 0; k < sizeof(sizes) / sizeof(sizes[0]); k++) {
+		unsigned char *p = rt_array_huge(64, sizes[k] / 64, 64), *q;
+
+		assert_non_null(p);
+		assert_int_equal((uintptr_t)p % (sizes[k] >= ((size_t)32 << 20) ? (size_t)2 << 20 : 64),
+				 0);
+		memset(p, 0x5a, sizes[k]);
+		p[sizes[k] - 1] = 7;
+		q = rt_aligned_shrink(p, 64, sizes[k] / 128, 64);
+		assert_non_null(q);
+		assert_int_equal(q[0], 0x5a);
+		assert_int_equal(q[sizes[k] / 128 * 64 - 1], 0x5a);
+		rt_free(q);
+	}
+	assert_null(rt_array_huge(64, SIZE_MAX / 2, 4));
+	assert_null(rt_array_huge(64, SIZE_MAX, 1));
+	rt_alloc_fail_from(1);
+	assert_null(rt_array_huge(64, (size_t)1 << 20, 64));
+	assert_null(rt_array_huge(64, 10, 10));
+	rt_alloc_fail_from(0);
+}
+
 static void test_alloc_counter(void **state)
 {
 	void *p;
@@ -396,6 +428,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_alloc_sweep_scene_load),
 		cmocka_unit_test(test_alloc_sweep_test_scene_and_cli_load),
 		cmocka_unit_test(test_alloc_calloc_huge),
+		cmocka_unit_test(test_alloc_array_huge),
 		cmocka_unit_test(test_alloc_image),
 		cmocka_unit_test(test_alloc_image_write),
 		cmocka_unit_test(test_alloc_render_allocates_nothing),
