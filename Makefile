@@ -33,11 +33,12 @@ WARN := -std=c99 -Wall -Wextra -Wpedantic -Wmissing-prototypes
 FP := -ffp-contract=off
 PNG_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 PNG_LIBS := $(shell pkg-config --libs libpng 2>/dev/null || echo -lpng)
-# The PNG's deflate: Intel's ISA-L where its header is found (Debian's
-# libisal-dev, which `make render` and `make deps` install where Debian
-# has it), seven times as fast as zlib's level 1; zlib otherwise
-# (src/image/png_deflate.h).
-HAVE_ISAL := $(shell printf '\043include <isa-l/igzip_lib.h>\n' | $(CC) -E -x c - >/dev/null 2>&1 && echo yes)
+# The PNG's deflate: Intel's ISA-L where a program using it compiles and
+# links with these flags (Debian's libisal-dev, which `make render` and
+# `make deps` install where Debian has it), four times as fast as zlib's
+# level 1; zlib otherwise (src/image/png_deflate.h).
+HAVE_ISAL := $(shell t=$$(mktemp) && printf '\043include <isa-l/igzip_lib.h>\nint main(void) { struct isal_zstream z; isal_deflate_stateless_init(&z); return 0; }\n' | \
+	$(CC) $(CFLAGS) -x c - -o $$t -lisal >/dev/null 2>&1 && echo yes; rm -f $$t)
 DEFLATE_CFLAGS := $(if $(HAVE_ISAL),-DRT_HAVE_ISAL)
 DEFLATE_LIBS := $(if $(HAVE_ISAL),-lisal)
 ALL_CFLAGS := $(WARN) $(FP) $(CFLAGS) -Iinclude -Isrc $(PNG_CFLAGS) $(DEFLATE_CFLAGS) -pthread -MMD -MP
@@ -135,10 +136,11 @@ ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
 %/accel/accel_walk_avx512.o: ALL_CFLAGS += -mfma
 endif
 
-# The deflate's two files are compiled anew when the library the build
+# What RT_HAVE_ISAL decides is compiled anew when the library the build
 # found changes (libisal-dev installed or removed since the last build).
 DEFLATE_OBJ := $(foreach d,$(BUILD) $(BUILD)/san $(BUILD)/fuzz,\
-	$(d)/src/image/png_deflate_isal.o $(d)/src/image/png_deflate_zlib.o)
+	$(d)/src/image/png_deflate_isal.o $(d)/src/image/png_deflate.o) \
+	$(BUILD)/san/tests/unit/image/test_png_deflate.o
 $(DEFLATE_OBJ): $(BUILD)/deflate.flags
 $(BUILD)/deflate.flags: FORCE
 	@mkdir -p $(@D)

@@ -4,10 +4,10 @@
 # object scene is big enough for the hierarchy's build to split its work
 # between threads too; helgrind (when valgrind is installed) then looks
 # for data races in the build, the parse's hashing thread and the render,
-# and in a PNG compressed by the render's threads.  The PNG files of 1, 2,
-# 3 and 7 threads are compared too (compressed during the render or after
-# it).  Every size leaves partial 16x16 blocks at the right and bottom edges
-# (203 = 12 x 16 + 11).  Since images that agree with each other can all
+# and in a PNG compressed by the render's threads or after it by the
+# write's.  The PNG files of 1, 2, 3 and 7 threads are compared too
+# (compressed during the render or after it).  Every size leaves partial
+# 16x16 blocks at the right and bottom edges (203 = 12 x 16 + 11).  Since images that agree with each other can all
 # be wrong alike, the 203-pixel render is also checked against what does
 # not share the block loop: the independent Python renderer
 # (tests/reference/ref_render.py, imgcmp's gate) and a merge of --region
@@ -115,6 +115,17 @@ if command -v valgrind >/dev/null 2>&1; then
 		pass=$((pass + 1))
 	else
 		echo "threadcheck: valgrind --tool=helgrind reports on the PNG:"
+		cat "$T/vg.err"
+		fail=$((fail + 1))
+	fi
+	# And compressed after a one-thread render by the write's own
+	# threads, whose first calls into the deflate library (ISA-L picks
+	# its code for the processor then) must not race.
+	if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j 1 -s 400 -o "$T/vg1.png" \
+		scenes/scene.txt 2>"$T/vg.err"; then
+		pass=$((pass + 1))
+	else
+		echo "threadcheck: valgrind --tool=helgrind reports on the PNG written after the render:"
 		cat "$T/vg.err"
 		fail=$((fail + 1))
 	fi

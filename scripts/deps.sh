@@ -3,7 +3,8 @@
 # with apt-get when run as root, otherwise by printing the command to run.
 # Usage: scripts/deps.sh [--optional] PACKAGE...
 # With --optional, a user who is not root is only told what is missing: the
-# tests that need those packages then say NOT RUN.
+# tests that need those packages then say NOT RUN, and a library that only
+# makes whitted faster (libisal-dev) leaves its work to the fallback.
 optional=no
 if [ "${1:-}" = --optional ]; then
 	optional=yes
@@ -30,7 +31,7 @@ if [ "$(id -u)" = 0 ]; then
 	exit 1
 fi
 if [ "$optional" = yes ]; then
-	echo "deps: optional packages missing (their tests will say NOT RUN); as root:" >&2
+	echo "deps: optional packages missing (what needs them does without: its suite says NOT RUN, or a slower fallback does the work); as root:" >&2
 	echo "  apt-get install -y$missing" >&2
 	exit 0
 fi

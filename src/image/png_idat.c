@@ -13,10 +13,9 @@
  * that the compression runs beside the render; the strips left over are
  * compressed when the file is written.  At 1536x1536 zlib's level 1 so
  * took a quarter of the time of libpng's fastest setting (no filter, zlib
- * level 3, one thread) for a file about as small; ISA-L takes a seventh of
- * zlib's.  libpng then writes the
- * chunks; its errors come back through a setjmp confined to
- * png_idat_guard, as in dist/tile_png.c. */
+ * level 3, one thread) for a file about as small; ISA-L takes a quarter
+ * of zlib's.  libpng then writes the chunks; its errors come back through
+ * a setjmp confined to png_idat_guard, as in dist/tile_png.c. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <pthread.h>
@@ -42,7 +41,7 @@ struct png_idat_strip {
 	unsigned char *out;
 	size_t cap, len;
 	uint32_t adler;
-	int status;		/* 0, or RT_E_NOMEM when zlib had no memory */
+	int status;		/* 0, or RT_E_NOMEM when the deflate failed */
 	bool done;		/* compressed, well or not (status says) */
 	int bands_final;	/* how many of the bands it needs are final */
 };
@@ -50,7 +49,7 @@ struct png_idat_strip {
 /* One thread's compressor, kept from strip to strip, and the buffer of
  * one strip's filtered rows. */
 struct png_idat_coder {
-	struct png_deflate *def;
+	void *def;		/* the library's (png_deflate.h) */
 	unsigned char *filtered;
 };
 
@@ -58,6 +57,7 @@ struct png_idat_strips {
 	const struct image *img;
 	struct png_idat_strip *strips;
 	int n_strips;
+	const struct png_deflate_ops *deflate;
 	struct png_idat_coder *coders;
 	int n_coders;
 	pthread_mutex_t lock;	/* over the strips' bands_final */
@@ -109,18 +109,19 @@ static void png_idat_filter(const struct image *img, unsigned char *filtered, in
 }
 
 /* The coder ready for a strip of `bytes` filtered bytes. */
-static int png_idat_coder_ready(struct png_idat_coder *c, size_t bytes)
+static int png_idat_coder_ready(const struct png_deflate_ops *ops, struct png_idat_coder *c,
+				size_t bytes)
 {
 	if (!c->filtered && !(c->filtered = rt_malloc(bytes)))
 		return RT_E_NOMEM;
 	if (!c->def)
-		return png_deflate_new(&c->def);
+		return ops->make(&c->def);
 	return 0;
 }
 
-static void png_idat_coder_free(struct png_idat_coder *c)
+static void png_idat_coder_free(const struct png_deflate_ops *ops, struct png_idat_coder *c)
 {
-	png_deflate_free(c->def);
+	ops->free(c->def);
 	c->def = NULL;
 	rt_free(c->filtered);
 	c->filtered = NULL;
@@ -137,13 +138,13 @@ static void png_idat_strip_run(struct png_idat_strips *st, int s, struct png_ida
 		y1 = st->img->height;
 	bytes = (size_t)(y1 - y0) * line;
 	strip->done = true;
-	if (png_idat_coder_ready(c, line * PNG_IDAT_STRIP_ROWS) != 0) {
+	if (png_idat_coder_ready(st->deflate, c, line * PNG_IDAT_STRIP_ROWS) != 0) {
 		strip->status = RT_E_NOMEM;
 		return;
 	}
 	png_idat_filter(st->img, c->filtered, y0, y1);
-	strip->adler = png_deflate_adler32(1, c->filtered, bytes);
-	strip->status = png_deflate_strip(c->def, c->filtered, bytes, s == st->n_strips - 1,
+	strip->adler = st->deflate->adler32(1, c->filtered, bytes);
+	strip->status = st->deflate->strip(c->def, c->filtered, bytes, s == st->n_strips - 1,
 					  strip->out, strip->cap, &strip->len);
 }
 
@@ -155,7 +156,7 @@ void png_idat_strips_free(struct png_idat_strips *st)
 		return;
 	pthread_mutex_destroy(&st->lock);
 	for (i = 0; st->coders && i < st->n_coders; i++)
-		png_idat_coder_free(&st->coders[i]);
+		png_idat_coder_free(st->deflate, &st->coders[i]);
 	for (i = 0; st->strips && i < st->n_strips; i++)
 		rt_free(st->strips[i].out);
 	rt_free(st->coders);
@@ -175,6 +176,9 @@ int png_idat_strips_open(const struct image *img, int threads, struct png_idat_s
 	if (!st)
 		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
 	pthread_mutex_init(&st->lock, NULL);
+	/* Here, on the thread that starts the ones that compress: the
+	 * library is readied before they exist (png_deflate.h). */
+	st->deflate = png_deflate_best();
 	st->img = img;
 	st->n_strips = (img->height + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS;
 	/* The compression after the fact (png_idat_strips_finish) uses up to
