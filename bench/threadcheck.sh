@@ -7,11 +7,12 @@
 # and in a PNG compressed by the render's threads or after it by the
 # write's.  The PNG files of 1, 2, 3 and 7 threads are compared too
 # (compressed during the render or after it).  Every size leaves partial
-# 16x16 blocks at the right and bottom edges (203 = 12 x 16 + 11).  Since images that agree with each other can all
-# be wrong alike, the 203-pixel render is also checked against what does
-# not share the block loop: the independent Python renderer
-# (tests/reference/ref_render.py, imgcmp's gate) and a merge of --region
-# renders cut off the 16-pixel grid (so every block falls elsewhere).
+# 16x16 blocks at the right and bottom edges (203 = 12 x 16 + 11).  Since
+# images that agree with each other can all be wrong alike, the 203-pixel
+# render is also checked against what does not share the block loop: the
+# independent Python renderer (tests/reference/ref_render.py, imgcmp's
+# gate) and a merge of --region renders cut off the 16-pixel grid (so
+# every block falls elsewhere).
 set -u
 BUILD=${BUILD:-build}
 W=$BUILD/whitted
