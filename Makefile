@@ -58,7 +58,7 @@ FAST_PKGS := libisal-dev
 CHECK_PKGS := $(CORE_PKGS) valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
-BENCH_PKGS := bc time
+BENCH_PKGS := bc
 # Offered, not required: the benchmark's Embree column (make deps installs it).
 BENCH_OPT_PKGS := libembree-dev
 
@@ -81,7 +81,7 @@ VIEWER_GL_CFLAGS := $(shell pkg-config --cflags glut gl 2>/dev/null)
 VIEWER_GL_LIBS := $(shell pkg-config --libs glut gl 2>/dev/null || echo -lglut -lGL)
 
 PROGRAMS := whitted scene2pov $(if $(VIEWER_HAVE_GL),whitted-view)
-TOOLS := gen_scene imgcmp imgfilter
+TOOLS := gen_scene imgcmp imgfilter walltime
 
 # ---- the example plugins (whitted/plugin.h) --------------------------------
 # One C file each under plugins/, built as the tutorial of docs/plugins.md
@@ -185,6 +185,9 @@ $(BUILD)/embree_build: $(BUILD)/bench/embree_build.o $(BUILD)/libwhitted.a
 
 $(BUILD)/gen_scene: $(BUILD)/bench/gen.o
 	$(CC) $(ALL_CFLAGS) -o $@ $^ -lm
+
+$(BUILD)/walltime: $(BUILD)/bench/walltime.o
+	$(CC) $(ALL_CFLAGS) -o $@ $^
 
 $(BUILD)/imgcmp $(BUILD)/imgfilter: $(BUILD)/%: $(BUILD)/tests/tools/%.o $(BUILD)/tests/tools/imgio.o
 	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
