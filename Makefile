@@ -275,6 +275,7 @@ portablecheck: all
 	@bench/portablecheck.sh $(BUILD)/whitted $(BUILD)/portable/whitted
 imgcmptest: all
 	@tests/tools/imgcmp-test.sh
+	@tests/tools/walltime-test.sh
 povcheck: all plugins
 	@tests/povcheck.sh
 embreecheck: all
