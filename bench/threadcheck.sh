@@ -107,29 +107,26 @@ if command -v valgrind >/dev/null 2>&1; then
 			fail=$((fail + 1))
 		fi
 	done
+	# helgrind_png WHAT THREADS SIZE: helgrind on a PNG of the course scene.
+	helgrind_png() {
+		if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j "$2" -s "$3" \
+			-o "$T/vg.png" scenes/scene.txt 2>"$T/vg.err"; then
+			pass=$((pass + 1))
+		else
+			echo "threadcheck: valgrind --tool=helgrind reports on the PNG $1:"
+			cat "$T/vg.err"
+			fail=$((fail + 1))
+		fi
+	}
 	# The PNG compressed during the render, three strips on three threads
 	# (or on one a processor, where there are more).
 	vj=3
 	[ "$np" -gt 3 ] && vj=$np
-	if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j $vj -s 130 -o "$T/vg.png" \
-		scenes/scene.txt 2>"$T/vg.err"; then
-		pass=$((pass + 1))
-	else
-		echo "threadcheck: valgrind --tool=helgrind reports on the PNG:"
-		cat "$T/vg.err"
-		fail=$((fail + 1))
-	fi
+	helgrind_png "compressed during the render" $vj 130
 	# And compressed after a one-thread render by the write's own
 	# threads, whose first calls into the deflate library (ISA-L picks
 	# its code for the processor then) must not race.
-	if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j 1 -s 400 -o "$T/vg1.png" \
-		scenes/scene.txt 2>"$T/vg.err"; then
-		pass=$((pass + 1))
-	else
-		echo "threadcheck: valgrind --tool=helgrind reports on the PNG written after the render:"
-		cat "$T/vg.err"
-		fail=$((fail + 1))
-	fi
+	helgrind_png "written after the render" 1 400
 else
 	echo "threadcheck: helgrind and memcheck NOT RUN (valgrind is not installed)"
 fi
