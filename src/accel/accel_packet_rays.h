@@ -54,6 +54,9 @@ struct packet_rays {
 #define RAYS_FLOATS 1
 #ifndef RT_ACCEL_PACKET_RAYS_FLOATS16
 #define RT_ACCEL_PACKET_RAYS_FLOATS16
+/* float_box_ray's limits lowered to floats: 2^99 < 1e30, 2^122 < 1e37. */
+#define RAYS_COORD_MAX 0x1p99f
+#define RAYS_T_MIN_MAX 0x1p122f
 /* Sixteen doubles to the nearest floats, by the processor's conversion
  * (which takes a finite value beyond the floats' range to +-inf). */
 static inline __m512 rays_floats16(const double *v)
@@ -84,59 +87,61 @@ static inline void RAYS_WALK(prepare_doubles)(struct packet_rays *v)
 }
 
 #if RAYS_FLOATS
-/* Whether float_box_ray holds for every lane of `active`, a vector of
- * lanes at a time: the same tests. */
-static inline bool RAYS_WALK(floats_hold)(const struct packet_rays *v, uint32_t active)
-{
-	const __m512d sign = _mm512_set1_pd(-0.0), zero = _mm512_setzero_pd();
-	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
-	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
-	int j, k;
-
-	for (j = 0; j < LANES; j += 8) {
-		__m512d t = _mm512_loadu_pd(v->s.t_min + j);
-		__mmask8 want = (__mmask8)(active >> j & 0xffu);
-		__mmask8 m = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ) &
-			     _mm512_cmp_pd_mask(t, _mm512_set1_pd(FLOAT_BOX_T_MIN_MAX), _CMP_LE_OQ);
-
-		for (k = 0; k < 3; k++) {
-			__m512d o = _mm512_loadu_pd(o_of[k] + j), dk = _mm512_loadu_pd(d[k] + j);
-			__m512d ao = _mm512_castsi512_pd(
-				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(o)));
-			__m512d ad = _mm512_castsi512_pd(
-				_mm512_andnot_si512(_mm512_castpd_si512(sign), _mm512_castpd_si512(dk)));
-
-			m &= _mm512_cmp_pd_mask(ao, _mm512_set1_pd(ACCEL_COORD_MAX), _CMP_LE_OQ);
-			m &= _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MAX), _CMP_LE_OQ);
-			m &= _mm512_cmp_pd_mask(dk, zero, _CMP_EQ_OQ) |
-			     _mm512_cmp_pd_mask(ad, _mm512_set1_pd(FLOAT_BOX_DIR_MIN), _CMP_GE_OQ);
-		}
-		if ((m & want) != want)
-			return false;
-	}
-	return true;
-}
-
-/* The float tests' values, all sixteen lanes at once: o and t_min to the
- * nearest float, inv the inverse of d rounded to a float (within 2u of
- * 1 / d: accel_float_box.h), e from those in float (at least 4u |o inv|
- * (1 - 5u), as the bound wants). */
-static inline void RAYS_WALK(prepare_floats)(struct packet_rays *v)
+/* The float tests' values, all sixteen lanes at once, where float_box_ray
+ * holds for every lane of `active` (else false, and the double tests
+ * take the packet): o and t_min to the nearest float, inv the inverse of
+ * d rounded to a float (within 2u of 1 / d: accel_float_box.h), e from
+ * those in float (at least 4u |o inv| (1 - 5u), as the bound wants).
+ * float_box_ray's limits are checked on the rounded values, which is
+ * what costs nothing here: rounding to nearest keeps order, so a rounded
+ * value strictly inside a limit that is itself a float (ACCEL_COORD_MAX
+ * and FLOAT_BOX_T_MIN_MAX lowered to one) comes from a double inside it
+ * too.  A value on a limit goes to the doubles, as do the lanes whose t_min
+ * rounds to a zero with its sign bit set.  A direction's coordinate that
+ * rounds to 0 is looked at in double: float_box_ray wants it exactly 0.
+ * (Checking the doubles before rounding them took 3.5% of the course
+ * example's render.) */
+static inline bool RAYS_WALK(prepare_floats)(struct packet_rays *v, uint32_t active)
 {
 	const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1.0f);
 	const __m512 inf = _mm512_set1_ps(INFINITY);
 	const double *o_of[3] = { v->s.p.ox, v->s.p.oy, v->s.p.oz };
-	const double *d[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
-	__m512 e = zero;
+	const double *d_of[3] = { v->s.p.dx, v->s.p.dy, v->s.p.dz };
+	const __m512 t = rays_floats16(v->s.t_min);
+	__m512 o[3], d[3], e = zero;
+	__mmask16 hold, zeros[3];
 	int k;
 
+	hold = _mm512_cmp_epi32_mask(_mm512_castps_si512(t), _mm512_setzero_si512(), _MM_CMPINT_NLT) &
+	       _mm512_cmp_ps_mask(t, _mm512_set1_ps(RAYS_T_MIN_MAX), _CMP_LT_OQ);
 	for (k = 0; k < 3; k++) {
-		__m512 o = rays_floats16(o_of[k]);
-		__m512 inv = _mm512_div_ps(one, _mm512_add_ps(rays_floats16(d[k]), zero));
-		__m512 oi = _mm512_abs_ps(_mm512_mul_ps(o, inv));
+		__m512 ad;
+
+		o[k] = rays_floats16(o_of[k]);
+		d[k] = rays_floats16(d_of[k]);
+		ad = _mm512_abs_ps(d[k]);
+		zeros[k] = _mm512_cmp_ps_mask(d[k], zero, _CMP_EQ_OQ);
+		hold &= _mm512_cmp_ps_mask(_mm512_abs_ps(o[k]), _mm512_set1_ps(RAYS_COORD_MAX),
+					   _CMP_LT_OQ) &
+			_mm512_cmp_ps_mask(ad, _mm512_set1_ps((float)FLOAT_BOX_DIR_MAX), _CMP_LT_OQ) &
+			(_mm512_cmp_ps_mask(ad, _mm512_set1_ps((float)FLOAT_BOX_DIR_MIN), _CMP_GT_OQ) |
+			 zeros[k]);
+	}
+	if ((hold & active) != active)
+		return false;
+	for (k = 0; k < 3; k++) {
+		uint32_t m;
+
+		for (m = zeros[k] & active; m; m &= m - 1)
+			if (d_of[k][__builtin_ctz(m)] != 0.0)
+				return false;
+	}
+	for (k = 0; k < 3; k++) {
+		__m512 inv = _mm512_div_ps(one, _mm512_add_ps(d[k], zero));
+		__m512 oi = _mm512_abs_ps(_mm512_mul_ps(o[k], inv));
 		__mmask16 finite = _mm512_cmp_ps_mask(_mm512_abs_ps(inv), inf, _CMP_NEQ_UQ);
 
-		_mm512_storeu_ps(v->of[k], o);
+		_mm512_storeu_ps(v->of[k], o[k]);
 		_mm512_storeu_ps(v->invf[k], inv);
 		v->far_first[k] = _mm512_cmp_ps_mask(inv, zero, _CMP_LT_OQ);
 		e = _mm512_mask_blend_ps(finite & _mm512_cmp_ps_mask(oi, e, _CMP_GT_OQ), e, oi);
@@ -145,7 +150,8 @@ static inline void RAYS_WALK(prepare_floats)(struct packet_rays *v)
 			  _mm512_set1_ps(1.0f + 0x1p-20f));
 	e = _mm512_max_ps(e, _mm512_set1_ps((float)FLOAT_BOX_ERR_MIN));
 	_mm512_storeu_ps(v->errf, e);
-	_mm512_storeu_ps(v->t_minf, rays_floats16(v->s.t_min));
+	_mm512_storeu_ps(v->t_minf, t);
+	return true;
 }
 #endif
 
@@ -156,11 +162,9 @@ static inline void RAYS_WALK(prepare)(struct packet_rays *v, uint32_t active)
 {
 	(void)active;
 #if RAYS_FLOATS
-	v->floats = RAYS_WALK(floats_hold)(v, active);
-	if (v->floats) {
-		RAYS_WALK(prepare_floats)(v);
+	v->floats = RAYS_WALK(prepare_floats)(v, active);
+	if (v->floats)
 		return;
-	}
 #endif
 	v->floats = false;
 	RAYS_WALK(prepare_doubles)(v);

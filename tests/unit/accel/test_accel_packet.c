@@ -362,6 +362,67 @@ static void test_packet_rays_along_faces_and_edges(void **state)
 	scene_destroy(s);
 }
 
+/* Rays on and beside the limits of the float box tests (float_box_ray):
+ * origins' coordinates about 1e30 and 2^99, directions' about 2^-24,
+ * 2^64 and rounding to float 0 without being 0, t_min about 0 (signed
+ * zeros, a tiny negative) and 1e37; the packets' walks check the limits
+ * on values rounded to floats (accel_packet_rays.h), and each ray, in a
+ * packet with the float tests or with the double ones, gives its single
+ * walk's answer. */
+static void test_packet_rays_at_the_float_limits(void **state)
+{
+	static const double coord[] = { 1e30, -1e30, 0x1p99, -0x1p99, 1e30 * (1 - 0x1p-52),
+					0x1p99 * (1 - 0x1p-52), 0x1p99 * (1 + 0x1p-52) };
+	static const double dir[] = { 0x1p-24, -0x1p-24, 0x1p-24 * (1 - 0x1p-40),
+				      0x1p-24 * (1 + 0x1p-40), 1e-46, -1e-46, 1e-300, -0.0,
+				      0x1p64, -0x1p64, 0x1p64 * (1 - 0x1p-52),
+				      0x1p64 * (1 + 0x1p-52) };
+	static const double start[] = { 0.0, -0.0, -1e-300, 1e-300, 1e37, 0x1p122,
+					0x1p122 * (1 - 0x1p-52), 1e37 * (1 + 0x1p-52) };
+	struct walk_set w;
+	struct scene *s = scene_create("limits");
+	struct diag d;
+	int i, k;
+
+	(void)state;
+	support_rng_seed(11);
+	for (i = 0; i < 40; i++)
+		add_random_shape(s, support_random_point(20), support_uniform(0.5, 5));
+	assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	walk_set_build(&w, s);
+	for (k = 0; k < 3000; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET];
+		int n = random_packet(k % 6, 20, r, t_min, t_max);
+		/* One lane, or every lane, at a limit. */
+		int lane = (int)(support_rng() * n), all = k % 7 == 0, axis = (int)(support_rng() * 3);
+
+		for (i = 0; i < n; i++) {
+			double *o = axis == 0 ? &r[i].origin.x : axis == 1 ? &r[i].origin.y : &r[i].origin.z;
+			double *dv = axis == 0 ? &r[i].dir.x : axis == 1 ? &r[i].dir.y : &r[i].dir.z;
+
+			if (i != lane && !all)
+				continue;
+			switch (k / 6 % 3) {
+			case 0:
+				*o = coord[(int)(support_rng() * (sizeof(coord) / sizeof(coord[0])))];
+				break;
+			case 1:
+				*dv = dir[(int)(support_rng() * (sizeof(dir) / sizeof(dir[0])))];
+				break;
+			default:
+				t_min[i] = start[(int)(support_rng() * (sizeof(start) / sizeof(start[0])))];
+				if (t_max[i] < t_min[i])
+					t_max[i] = INFINITY;
+			}
+		}
+		check_packet(&w, r, n, t_min, t_max);
+	}
+	walk_set_free(&w);
+	scene_destroy(s);
+}
+
 /* No bounded shapes (only the floor), and no shapes at all. */
 static void test_packet_unbounded_and_empty(void **state)
 {
@@ -594,6 +655,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_packet_random_scenes_match_single_rays),
 		cmocka_unit_test(test_packet_ties_keep_the_single_walks_shape),
 		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
+		cmocka_unit_test(test_packet_rays_at_the_float_limits),
 		cmocka_unit_test(test_packet_unbounded_and_empty),
 		cmocka_unit_test(test_packet_shape_packet_method),
 		cmocka_unit_test(test_packet_stray_bits_of_a_method_are_dropped),
