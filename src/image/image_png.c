@@ -46,19 +46,13 @@ void image_png_writer_band_done(void *writer, int band, int thread)
 	png_idat_strips_band_done(w->strips, band, thread);
 }
 
-/* image_write_file's fill: the strips joined, then the chunks, so that
- * an error names the file as image_write's do. */
+/* image_write_file's fill: the chunks from the strips, so that an error
+ * names the file as image_write's do. */
 static int image_png_writer_fill(void *ctx, FILE *f, struct diag *d)
 {
 	struct image_png_writer *w = ctx;
-	struct png_idat z;
-	int rc;
 
-	if ((rc = png_idat_strips_finish(w->strips, &z, d)) < 0)
-		return rc;
-	rc = png_idat_write_data(w->img, &z, f, NULL, NULL, d);
-	png_idat_free(&z);
-	return rc;
+	return png_idat_strips_write(w->strips, f, NULL, NULL, d);
 }
 
 int image_png_writer_write(struct image_png_writer *w, const char *path,

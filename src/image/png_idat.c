@@ -62,6 +62,11 @@ struct png_idat_strips {
 	int n_coders;
 	pthread_mutex_t lock;	/* over the strips' bands_final */
 	int next;		/* atomic: the next strip a finishing thread looks at */
+	/* The strips' outputs, one after the other, each its bound long:
+	 * one allocation, where one a strip cost a mapping and its removal
+	 * each (the bound is over glibc's mmap threshold). */
+	unsigned char *outs;
+	unsigned char trailer[4];	/* the stream's Adler-32, once finished */
 };
 
 /* Rows [y0, y1) with the Up filter: filtered[x] = row[x] - above[x]
@@ -157,8 +162,7 @@ void png_idat_strips_free(struct png_idat_strips *st)
 	pthread_mutex_destroy(&st->lock);
 	for (i = 0; st->coders && i < st->n_coders; i++)
 		png_idat_coder_free(st->deflate, &st->coders[i]);
-	for (i = 0; st->strips && i < st->n_strips; i++)
-		rt_free(st->strips[i].out);
+	rt_free(st->outs);
 	rt_free(st->coders);
 	rt_free(st->strips);
 	rt_free(st);
@@ -167,7 +171,7 @@ void png_idat_strips_free(struct png_idat_strips *st)
 int png_idat_strips_open(const struct image *img, int threads, struct png_idat_strips **out,
 			 struct diag *d)
 {
-	size_t line = (size_t)img->width * 3 + 1;
+	size_t line = (size_t)img->width * 3 + 1, cap;
 	struct png_idat_strips *st;
 	int s;
 
@@ -188,11 +192,12 @@ int png_idat_strips_open(const struct image *img, int threads, struct png_idat_s
 	st->coders = rt_calloc((size_t)st->n_coders, sizeof(*st->coders));
 	if (!st->strips || !st->coders)
 		goto out_nomem;
+	cap = png_deflate_bound(line * PNG_IDAT_STRIP_ROWS);
+	if (!(st->outs = rt_reallocarray(NULL, (size_t)st->n_strips, cap)))
+		goto out_nomem;
 	for (s = 0; s < st->n_strips; s++) {
-		st->strips[s].cap = png_deflate_bound(line * PNG_IDAT_STRIP_ROWS);
-		st->strips[s].out = rt_malloc(st->strips[s].cap);
-		if (!st->strips[s].out)
-			goto out_nomem;
+		st->strips[s].cap = cap;
+		st->strips[s].out = st->outs + (size_t)s * cap;
 	}
 	*out = st;
 	return 0;
@@ -274,46 +279,82 @@ static void png_idat_run_rest(struct png_idat_strips *st)
 			pthread_join(workers[t].tid, NULL);
 }
 
-/* The zlib stream: header (deflate, 32 KiB window, fastest), the strips,
- * the Adler-32 of all rows, big-endian. */
-static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
+/* The zlib stream's header: deflate, 32 KiB window, fastest. */
+static const unsigned char png_idat_header[2] = { 0x78, 0x01 };
+
+/* The strips compressed (those no band_done call compressed, here), and
+ * the stream's trailer: the Adler-32 of all rows, big-endian, from the
+ * strips'. */
+static int png_idat_strips_seal(struct png_idat_strips *st, struct diag *d)
 {
-	size_t total = 2 + 4, pos = 2, line = (size_t)st->img->width * 3 + 1;
+	size_t line = (size_t)st->img->width * 3 + 1;
 	uLong adler = 1;
 	int s;
 
+	png_idat_run_rest(st);
 	for (s = 0; s < st->n_strips; s++) {
+		int rows = st->img->height - s * PNG_IDAT_STRIP_ROWS;
+
 		if (st->strips[s].status != 0)
 			return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-		total += st->strips[s].len;
+		if (rows > PNG_IDAT_STRIP_ROWS)
+			rows = PNG_IDAT_STRIP_ROWS;
+		adler = adler32_combine(adler, st->strips[s].adler, (z_off_t)((size_t)rows * line));
+	}
+	st->trailer[0] = (unsigned char)(adler >> 24);
+	st->trailer[1] = (unsigned char)(adler >> 16);
+	st->trailer[2] = (unsigned char)(adler >> 8);
+	st->trailer[3] = (unsigned char)adler;
+	return 0;
+}
+
+/* Piece k of the sealed stream, k in [0, n_strips + 2): the header, the
+ * strips in order, the trailer. */
+static const unsigned char *png_idat_piece(const struct png_idat_strips *st, int k, size_t *len)
+{
+	if (k == 0) {
+		*len = sizeof(png_idat_header);
+		return png_idat_header;
+	}
+	if (k <= st->n_strips) {
+		*len = st->strips[k - 1].len;
+		return st->strips[k - 1].out;
+	}
+	*len = sizeof(st->trailer);
+	return st->trailer;
+}
+
+/* The sealed stream's pieces joined. */
+static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
+{
+	size_t total = 0, len;
+	int k;
+
+	for (k = 0; k < st->n_strips + 2; k++) {
+		png_idat_piece(st, k, &len);
+		total += len;
 	}
 	out->data = rt_malloc(total);
 	if (!out->data)
 		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
-	out->data[0] = 0x78;
-	out->data[1] = 0x01;
-	for (s = 0; s < st->n_strips; s++) {
-		int rows = st->img->height - s * PNG_IDAT_STRIP_ROWS;
+	out->len = 0;
+	for (k = 0; k < st->n_strips + 2; k++) {
+		const unsigned char *p = png_idat_piece(st, k, &len);
 
-		if (rows > PNG_IDAT_STRIP_ROWS)
-			rows = PNG_IDAT_STRIP_ROWS;
-		memcpy(out->data + pos, st->strips[s].out, st->strips[s].len);
-		pos += st->strips[s].len;
-		adler = adler32_combine(adler, st->strips[s].adler, (z_off_t)((size_t)rows * line));
+		memcpy(out->data + out->len, p, len);
+		out->len += len;
 	}
-	out->data[pos++] = (unsigned char)(adler >> 24);
-	out->data[pos++] = (unsigned char)(adler >> 16);
-	out->data[pos++] = (unsigned char)(adler >> 8);
-	out->data[pos++] = (unsigned char)adler;
-	out->len = pos;
 	return 0;
 }
 
 int png_idat_strips_finish(struct png_idat_strips *st, struct png_idat *out, struct diag *d)
 {
+	int rc;
+
 	out->data = NULL;
 	out->len = 0;
-	png_idat_run_rest(st);
+	if ((rc = png_idat_strips_seal(st, d)) < 0)
+		return rc;
 	return png_idat_join(st, out, d);
 }
 
@@ -343,7 +384,7 @@ struct png_idat_writer {
 	png_structp png;
 	png_infop info;
 	const struct image *img;
-	const struct png_idat *z;
+	const struct png_idat_strips *st;	/* sealed */
 	FILE *f;
 	png_idat_extra_fn *extra;
 	void *ctx;
@@ -364,10 +405,44 @@ static void png_idat_warning(png_structp png, png_const_charp msg)
 	(void)msg;
 }
 
+/* The sealed stream in IDAT chunks of PNG_IDAT_CHUNK bytes (the last
+ * shorter), straight from its pieces: joining them first cost a copy and
+ * the faults of a buffer the size of the file. */
+static void png_idat_chunks(struct png_idat_writer *w)
+{
+	static const png_byte idat[5] = "IDAT";
+	size_t total = 0, pos, len, used = 0;
+	const unsigned char *p;
+	int k, n = w->st->n_strips + 2;
+
+	for (k = 0; k < n; k++) {
+		png_idat_piece(w->st, k, &len);
+		total += len;
+	}
+	k = 0;
+	p = png_idat_piece(w->st, k, &len);
+	for (pos = 0; pos < total; pos += PNG_IDAT_CHUNK) {
+		size_t left = total - pos < PNG_IDAT_CHUNK ? total - pos : PNG_IDAT_CHUNK;
+
+		png_write_chunk_start(w->png, idat, (png_uint_32)left);
+		while (left > 0) {
+			size_t take = len - used < left ? len - used : left;
+
+			png_write_chunk_data(w->png, p + used, take);
+			used += take;
+			left -= take;
+			if (used == len && k + 1 < n) {
+				p = png_idat_piece(w->st, ++k, &len);
+				used = 0;
+			}
+		}
+		png_write_chunk_end(w->png);
+	}
+}
+
 static void png_idat_steps(struct png_idat_writer *w)
 {
-	static const png_byte idat[5] = "IDAT", iend[5] = "IEND";
-	size_t pos;
+	static const png_byte iend[5] = "IEND";
 
 	png_init_io(w->png, w->f);
 	png_set_IHDR(w->png, w->info, (png_uint_32)w->img->width, (png_uint_32)w->img->height, 8,
@@ -378,10 +453,7 @@ static void png_idat_steps(struct png_idat_writer *w)
 	if (w->extra)
 		w->extra(w->png, w->info, w->ctx);
 	png_write_info(w->png, w->info);
-	for (pos = 0; pos < w->z->len; pos += PNG_IDAT_CHUNK) {
-		size_t n = w->z->len - pos < PNG_IDAT_CHUNK ? w->z->len - pos : PNG_IDAT_CHUNK;
-		png_write_chunk(w->png, idat, w->z->data + pos, n);
-	}
+	png_idat_chunks(w);
 	/* png_write_end would refuse: it counts only the IDATs it wrote
 	 * itself. */
 	png_write_chunk(w->png, iend, NULL, 0);
@@ -398,15 +470,18 @@ static bool png_idat_guard(struct png_idat_writer *w)
 	return true;
 }
 
-int png_idat_write_data(const struct image *img, const struct png_idat *z, FILE *f,
-			png_idat_extra_fn *extra, void *ctx, struct diag *d)
+int png_idat_strips_write(struct png_idat_strips *st, FILE *f, png_idat_extra_fn *extra,
+			  void *ctx, struct diag *d)
 {
 	struct png_idat_writer w;
 	bool ok;
+	int rc;
 
+	if ((rc = png_idat_strips_seal(st, d)) < 0)
+		return rc;
 	memset(&w, 0, sizeof(w));
-	w.img = img;
-	w.z = z;
+	w.img = st->img;
+	w.st = st;
 	w.f = f;
 	w.extra = extra;
 	w.ctx = ctx;
@@ -433,13 +508,12 @@ int png_idat_write_data(const struct image *img, const struct png_idat *z, FILE 
 int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
 			struct diag *d)
 {
-	struct png_idat z;
+	struct png_idat_strips *st;
 	int rc;
 
-	rc = png_idat_compress(img, &z, d);
-	if (rc != 0)
+	if ((rc = png_idat_strips_open(img, 1, &st, d)) < 0)
 		return rc;
-	rc = png_idat_write_data(img, &z, f, extra, ctx, d);
-	png_idat_free(&z);
+	rc = png_idat_strips_write(st, f, extra, ctx, d);
+	png_idat_strips_free(st);
 	return rc;
 }

@@ -29,7 +29,8 @@ void png_idat_free(struct png_idat *z);
  * once per band; no two calls with the same thread at once.  Calls for
  * different bands may come from different threads at the same time.
  * png_idat_strips_finish, once every thread is done, compresses what is
- * left and joins the strips: the same stream as png_idat_compress's.  img
+ * left and joins the strips: the same stream as png_idat_compress's
+ * (png_idat_strips_write instead writes the file from the strips).  img
  * must stay in place (its pixels may change only in bands not yet told)
  * until png_idat_strips_free. */
 struct png_idat_strips;
@@ -44,10 +45,12 @@ void png_idat_strips_free(struct png_idat_strips *st);
  * it runs inside the writer's error guard and may call libpng freely. */
 typedef void png_idat_extra_fn(png_structp png, png_infop info, void *ctx);
 
-/* Writes img as an 8-bit RGB PNG with an sRGB chunk to f: IHDR, sRGB,
- * whatever extra adds (may be NULL), the image data z (img's), IEND. */
-int png_idat_write_data(const struct image *img, const struct png_idat *z, FILE *f,
-			png_idat_extra_fn *extra, void *ctx, struct diag *d);
+/* Writes st's image as an 8-bit RGB PNG with an sRGB chunk to f: IHDR,
+ * sRGB, whatever extra adds (may be NULL), the image data (st's strips,
+ * those not yet compressed compressed here, once every thread that calls
+ * png_idat_strips_band_done is done), IEND. */
+int png_idat_strips_write(struct png_idat_strips *st, FILE *f, png_idat_extra_fn *extra,
+			  void *ctx, struct diag *d);
 /* The same with img's image data compressed here. */
 int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
 			struct diag *d);
