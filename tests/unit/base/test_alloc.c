@@ -327,12 +327,14 @@ static void test_alloc_aligned(void **state)
 
 /* Big zeroed buffers: small ones as rt_calloc, big ones aligned to the
  * huge page and zeroed to the last byte (the image's size of a 1536 px
- * render among them), overflow and the failure switch refuse, rt_free
- * frees either. */
+ * render among them, and sizes whose huge pages the zeroing threads share
+ * unevenly), each over memory just filled and freed; overflow and the
+ * failure switch refuse, rt_free frees either. */
 static void test_alloc_calloc_huge(void **state)
 {
 	static const size_t sizes[] = {1, 4096, ((size_t)2 << 20) - 1, (size_t)2 << 20,
-				       (size_t)1536 * 1536 * 3, ((size_t)6 << 20) + 1};
+				       (size_t)1536 * 1536 * 3, ((size_t)6 << 20) + 1,
+				       ((size_t)5 << 20) + 7, ((size_t)17 << 21) - 3};
 	size_t k, i;
 
 	(void)state;
