@@ -14,7 +14,11 @@
 # and on sadathossain01 of the course files (9 lights, the slowest to shade)
 # red and blue swapped, and upside down and brighter (no cause explains it).
 #
-# Environment: RUNS (default 5; the 1M case does 3), THREADS (2),
+# Environment: RUNS (default 5; the 1M case does 3, the course example
+# RUNS_EXAMPLE, default 2 RUNS + 1: its whitted run is some 70 ms, of which
+# a host that takes a processor away for a moment, or hands back memory
+# it had reclaimed, costs 5 to 20 ms in one run of three or four, so its
+# median wants more runs than the long ones'), THREADS (2),
 # CASES (default "example gen-1k gen-100k gen-1M cloud-1k cloud-100k compare"),
 # BENCH_DIR (build/bench-out), POV_1M=1 to time POV-Ray on 1M primitives too,
 # POV_EXPORT (default build/scene2pov): the exporter, called as
@@ -34,6 +38,7 @@ set -eu
 BUILD=${BUILD:-build}
 DIR=${BENCH_DIR:-$BUILD/bench-out}
 RUNS=${RUNS:-5}
+RUNS_EXAMPLE=${RUNS_EXAMPLE:-$((2 * RUNS + 1))}
 THREADS=${THREADS:-2}
 WHITTED=$BUILD/whitted
 WALLTIME=$BUILD/walltime
@@ -189,7 +194,7 @@ compare_cases=no
 for c in ${CASES:-example gen-1k gen-100k gen-1M cloud-1k cloud-100k compare}; do
 	[ "$c" = compare ] && { compare_cases=yes; continue; }
 	case $c in
-	example) bench example scenes/scene.txt 1536 1 "$RUNS" "$have_pov" ;;
+	example) bench example scenes/scene.txt 1536 1 "$RUNS_EXAMPLE" "$have_pov" ;;
 	gen-1k) bench gen-1k "$DIR/surface-1000.txt" 512 1000 "$RUNS" "$have_pov" ;;
 	gen-100k) bench gen-100k "$DIR/surface-100000.txt" 512 100000 "$RUNS" "$have_pov" ;;
 	gen-1M) bench gen-1M "$DIR/surface-1000000.txt" 512 1000000 "$runs1m" "$pov1m" ;;
