@@ -107,10 +107,11 @@ if command -v valgrind >/dev/null 2>&1; then
 			fail=$((fail + 1))
 		fi
 	done
-	# helgrind_png WHAT THREADS SIZE: helgrind on a PNG of the course scene.
+	# helgrind_png WHAT THREADS SIZE [SCENE]: helgrind on a PNG of the
+	# course scene (or SCENE).
 	helgrind_png() {
 		if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j "$2" -s "$3" \
-			-o "$T/vg.png" scenes/scene.txt 2>"$T/vg.err"; then
+			-o "$T/vg.png" "${4:-scenes/scene.txt}" 2>"$T/vg.err"; then
 			pass=$((pass + 1))
 		else
 			echo "threadcheck: valgrind --tool=helgrind reports on the PNG $1:"
@@ -127,6 +128,10 @@ if command -v valgrind >/dev/null 2>&1; then
 	# threads, whose first calls into the deflate library (ISA-L picks
 	# its code for the processor then) must not race.
 	helgrind_png "written after the render" 1 400
+	# An image over 2 MiB (900 px: 2.4 MB), which the allocator zeroes
+	# on one thread a processor (base/huge_pages.c) before the render's
+	# threads write it.
+	helgrind_png "of 900 px, its memory zeroed on several threads" 2 900 scenes/sphere.txt
 else
 	echo "threadcheck: helgrind and memcheck NOT RUN (valgrind is not installed)"
 fi

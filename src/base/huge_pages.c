@@ -91,7 +91,10 @@ static void zero_huge(unsigned char *p, size_t n)
 
 	if ((size_t)k > pages)
 		k = (int)pages;
-	each = (pages + (size_t)k - 1) / (size_t)k * HUGE_PAGE;
+	each = (pages + (size_t)k - 1) / (size_t)k;
+	/* No thread for nothing: 9 pages on 8 processors are 5 parts of 2. */
+	k = (int)((pages + each - 1) / each);
+	each *= HUGE_PAGE;
 	for (i = 0; i < k; i++) {
 		part[i].p = p + at;
 		part[i].n = n - at < each ? n - at : each;

@@ -185,7 +185,8 @@ int png_idat_strips_open(const struct image *img, int threads, struct png_idat_s
 	st->deflate = png_deflate_best();
 	st->img = img;
 	st->n_strips = (img->height + PNG_IDAT_STRIP_ROWS - 1) / PNG_IDAT_STRIP_ROWS;
-	/* The compression after the fact (png_idat_strips_finish) uses up to
+	/* The compression after the fact (png_idat_strips_seal, for
+	 * png_idat_strips_write and png_idat_strips_finish) uses up to
 	 * PNG_IDAT_MAX_THREADS of them. */
 	st->n_coders = threads > PNG_IDAT_MAX_THREADS ? threads : PNG_IDAT_MAX_THREADS;
 	st->strips = rt_calloc((size_t)st->n_strips, sizeof(*st->strips));

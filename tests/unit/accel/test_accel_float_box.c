@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "accel/accel.h"
+#include "accel/accel_float_box.h"
 #include "accel/accel_tree.h"
 #include "support.h"
 
@@ -312,6 +313,89 @@ static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **
 	}
 }
 
+/* The packets' check of the same limits (accel_packet_rays.h), made on
+ * the values rounded to floats: a packet goes to the float tests only if
+ * float_box_ray holds for each of its rays, never looser.  Packets of
+ * ordinary rays with one ray, or all, at or beside a limit: an origin's
+ * coordinate about 1e30 and 2^99, a direction's about 2^-24 and 2^64 or
+ * rounding to float 0 without being 0, t_min about 0 (signed zeros, a
+ * tiny negative) and 1e37, NaN and infinities; and the share of packets
+ * the floats take, so that the check is not simply refusing them all. */
+static void test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doubles(void **state)
+{
+	static const double coord[] = { 1e30, -1e30, 0x1p99, -0x1p99, 0x1p99 * (1 - 0x1p-53),
+					0x1p99 * (1 + 0x1p-52), 6e29, 1e30 * (1 - 0x1p-52), NAN,
+					INFINITY, 1e-310 };
+	static const double dir[] = { 0x1p-24, -0x1p-24, 0x1p-24 * (1 - 0x1p-40),
+				      0x1p-24 * (1 + 0x1p-40), 0x1p-24 * (1 + 0x1p-22), 1e-46,
+				      -1e-46, 1e-300, 0x1p-149, 0x1p-127, -0.0, 0x1p64, -0x1p64,
+				      0x1p64 * (1 - 0x1p-52), 0x1p64 * (1 - 0x1p-23),
+				      0x1p64 * (1 + 0x1p-52), NAN, -INFINITY };
+	static const double start[] = { 0.0, -0.0, -1e-300, 1e-300, -0x1p-149, 1e37, 0x1p122,
+					0x1p122 * (1 - 0x1p-52), 0x1p122 * (1 - 0x1p-23), 5e36,
+					1e37 * (1 + 0x1p-52), NAN, INFINITY };
+	struct bvh4_node n4;
+	long floats = 0, trials = 0;
+	int k;
+
+	(void)state;
+	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
+		print_message("no AVX-512 here: the float box tests cannot run\n");
+		skip();
+	}
+	support_rng_seed(13);
+	random_node4(&n4, 1.0);
+	for (k = 0; k < 60000; k++) {
+		struct ray r[ACCEL_PACKET];
+		double t_min[ACCEL_PACKET], t_max[ACCEL_PACKET], fe[4][ACCEL_PACKET], xe[4][ACCEL_PACKET];
+		uint32_t fc[4], xc[4];
+		int lane = (int)(support_rng() * ACCEL_PACKET), all = k % 5 == 0, i, got;
+		bool hold = true;
+
+		for (i = 0; i < ACCEL_PACKET; i++) {
+			double *o, *d;
+			int axis = (int)(support_rng() * 3);
+
+			r[i].origin = vec3_make(support_uniform(-50, 50), support_uniform(-50, 50),
+						support_uniform(-50, 50));
+			r[i].dir = vec3_make(support_uniform(0.1, 1), -support_uniform(0.1, 1),
+					     support_uniform(0.1, 1));
+			t_min[i] = 1e-6;
+			t_max[i] = INFINITY;
+			if (i != lane && !all)
+				continue;
+			o = axis == 0 ? &r[i].origin.x : axis == 1 ? &r[i].origin.y : &r[i].origin.z;
+			d = axis == 0 ? &r[i].dir.x : axis == 1 ? &r[i].dir.y : &r[i].dir.z;
+			switch (k % 3) {
+			case 0:
+				*o = pick(coord, (int)(sizeof(coord) / sizeof(coord[0])));
+				break;
+			case 1:
+				*d = pick(dir, (int)(sizeof(dir) / sizeof(dir[0])));
+				break;
+			default:
+				t_min[i] = pick(start, (int)(sizeof(start) / sizeof(start[0])));
+			}
+		}
+		for (i = 0; i < ACCEL_PACKET; i++)
+			hold = hold && float_box_ray(&r[i], t_min[i]);
+		got = accel_avx512_rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
+		assert_true(got >= 0);
+		trials++;
+		floats += got;
+		if (got == 1 && !hold) {
+			for (i = 0; i < ACCEL_PACKET && float_box_ray(&r[i], t_min[i]); i++)
+				;
+			fail_msg("packet %d took the float tests, but its lane %d cannot: origin %a %a %a, "
+				 "direction %a %a %a, t_min %a",
+				 k, i, r[i].origin.x, r[i].origin.y, r[i].origin.z, r[i].dir.x, r[i].dir.y,
+				 r[i].dir.z, t_min[i]);
+		}
+	}
+	print_message("%ld of %ld packets took the float tests\n", floats, trials);
+	assert_true(floats > trials / 10);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -319,6 +403,7 @@ int main(void)
 		cmocka_unit_test(test_float_box_tests_leave_rays_they_cannot_bound_to_doubles),
 		cmocka_unit_test(test_float_box_tests_origins_below_the_normal_floats),
 		cmocka_unit_test(test_float_box_tests_of_packets_enter_every_box_the_double_test_enters),
+		cmocka_unit_test(test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doubles),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
