@@ -7,7 +7,11 @@
  * inv within 2u of 1 / d (the nearest float of the double inverse, or
  * the float inverse of d's nearest float), so the slab distance T =
  * (b - o) inv comes out within 4u |T| + u |o inv| (to first order; the
- * double test's own error is 2^-52 |T|).  The walks widen each interval
+ * double test's own error is 2^-52 |T|).  The single-ray walk takes it
+ * as one multiply-add, b inv - p with p = o inv rounded once: with the
+ * multiply-add's one rounding, within 3u |T| + 2u |o inv|, inside the
+ * same widening; that needs inv finite (b inf - o inf is NaN), so a ray
+ * along an axis takes the double walk there.  The walks widen each interval
  * [lo, hi] to [lo (1 - 8u) - e, hi (1 + 8u) + e] with e at least
  * 4u (1 - 5u) max |o inv| over the axes: the interval then holds the
  * double test's with 3u |T| to spare, the widening's own rounding

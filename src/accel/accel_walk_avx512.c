@@ -4,7 +4,8 @@
  * floats, eight to a 256-bit operation: half the work of the doubles the
  * other walks test in (the float boxes widened to double, eight to a
  * 512-bit operation, which a processor that splits those in two pays
- * twice), the course's 100k cloud 0.88x the time.  The float answer is
+ * twice), the course's 100k cloud 0.88x the time; each plane's distance
+ * one multiply-add (slab_f), 0.955x more.  The float answer is
  * widened by a bound on its rounding error (accel_float_box.h), so every box
  * the double test enters is entered here too, at an entry no later: the
  * walk meets a superset of the shapes the other walks meet, in another
@@ -41,8 +42,16 @@ static inline __m256 float_set1(double v)
 	return _mm256_broadcastss_ps(_mm_cvtsd_ss(_mm_setzero_ps(), _mm_set_sd(v)));
 }
 
+/* Whether the float walks can take r from t_min: the rays float_box_ray
+ * holds that move along every axis (slab_f); the others take the double
+ * walks. */
+static inline bool float_fma_ray(const struct ray *r, double t_min)
+{
+	return float_box_ray(r, t_min) && r->dir.x != 0.0 && r->dir.y != 0.0 && r->dir.z != 0.0;
+}
+
 struct walk_ray_float {
-	__m256 o[3], inv[3];	/* rounded to the nearest float */
+	__m256 oi[3], inv[3];	/* o inv, with o and inv rounded to floats */
 	__m256 err;		/* e */
 	int near_off[3], far_off[3];	/* float offsets into struct bvh8_node */
 };
@@ -52,16 +61,22 @@ static inline void walk_ray_float_init(struct walk_ray_float *v, const struct ra
 	int k;
 
 	for (k = 0; k < 3; k++) {
-		v->o[k] = float_set1(rs->o[k]);
 		v->inv[k] = float_set1(rs->inv[k]);
+		v->oi[k] = _mm256_mul_ps(float_set1(rs->o[k]), v->inv[k]);
 	}
 	v->err = float_set1(float_box_err(rs->o, rs->inv));
 	ray_slab_offsets(rs, ACCEL_W, v->near_off, v->far_off);
 }
 
-static inline __m256 slab_f(const float *b, int off, __m256 o, __m256 inv)
+/* (b - o) inv as b inv - o inv, one multiply-add (rounded once) from the
+ * ray's o inv (rounded once): within 3u |T| + 2u |o inv| of the double
+ * test's T, inside the widening's 8u |T| + e (accel_float_box.h), and one
+ * operation shorter than the subtraction and the product, on the walk's
+ * longest chain of waits (cloud-100k's render 0.955x).  It needs inv
+ * finite: (b - o) inf is +-inf, but b inf - o inf is NaN (float_fma_ray). */
+static inline __m256 slab_f(const float *b, int off, __m256 oi, __m256 inv)
 {
-	return _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(b + off), o), inv);
+	return _mm256_fmsub_ps(_mm256_loadu_ps(b + off), inv, oi);
 }
 
 /* The children's entries, and the mask of those entered: the float test
@@ -74,12 +89,12 @@ static inline __m512d node_interval_float(const struct bvh8_node *node,
 	const float *b = &node->lo[0][0];
 	__m256 lo = float_set1(t_min), hi = float_set1(t_max);
 
-	lo = _mm256_max_ps(slab_f(b, v->near_off[0], v->o[0], v->inv[0]), lo);
-	hi = _mm256_min_ps(slab_f(b, v->far_off[0], v->o[0], v->inv[0]), hi);
-	lo = _mm256_max_ps(slab_f(b, v->near_off[1], v->o[1], v->inv[1]), lo);
-	hi = _mm256_min_ps(slab_f(b, v->far_off[1], v->o[1], v->inv[1]), hi);
-	lo = _mm256_max_ps(slab_f(b, v->near_off[2], v->o[2], v->inv[2]), lo);
-	hi = _mm256_min_ps(slab_f(b, v->far_off[2], v->o[2], v->inv[2]), hi);
+	lo = _mm256_max_ps(slab_f(b, v->near_off[0], v->oi[0], v->inv[0]), lo);
+	hi = _mm256_min_ps(slab_f(b, v->far_off[0], v->oi[0], v->inv[0]), hi);
+	lo = _mm256_max_ps(slab_f(b, v->near_off[1], v->oi[1], v->inv[1]), lo);
+	hi = _mm256_min_ps(slab_f(b, v->far_off[1], v->oi[1], v->inv[1]), hi);
+	lo = _mm256_max_ps(slab_f(b, v->near_off[2], v->oi[2], v->inv[2]), lo);
+	hi = _mm256_min_ps(slab_f(b, v->far_off[2], v->oi[2], v->inv[2]), hi);
 	lo = _mm256_fmsub_ps(lo, _mm256_set1_ps(1.0f - FLOAT_BOX_REL), v->err);
 	hi = _mm256_fmadd_ps(hi, _mm256_set1_ps(1.0f + FLOAT_BOX_REL), v->err);
 	*mask = _mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ));
@@ -196,14 +211,14 @@ static inline int node_hits_exact(const struct bvh8_node *node, const struct wal
 static const struct shape *walk_avx512_intersect(const struct accel *a, const struct ray *r,
 						 double t_min, double *t_max)
 {
-	return float_box_ray(r, t_min) ? walk_avx512_float_intersect(a, r, t_min, t_max)
+	return float_fma_ray(r, t_min) ? walk_avx512_float_intersect(a, r, t_min, t_max)
 				     : walk_avx512_exact_intersect(a, r, t_min, t_max);
 }
 
 static bool walk_avx512_occluded(const struct accel *a, const struct ray *r, double t_min,
 				 double t_max)
 {
-	return float_box_ray(r, t_min) ? walk_avx512_float_occluded(a, r, t_min, t_max)
+	return float_fma_ray(r, t_min) ? walk_avx512_float_occluded(a, r, t_min, t_max)
 				     : walk_avx512_exact_occluded(a, r, t_min, t_max);
 }
 
@@ -220,7 +235,7 @@ int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, d
 	ray_slab_init(&rs, r);
 	walk_ray_exact_init(&x, &rs);
 	*exact_mask = node_entries_exact(node, &x, t_min, t_max, exact_entry);
-	if (float_box_ray(r, t_min)) {
+	if (float_fma_ray(r, t_min)) {
 		walk_ray_float_init(&f, &rs);
 		mask = node_entries_float(node, &f, t_min, t_max, float_entry);
 	}
@@ -249,7 +264,7 @@ static inline void rays8_lane_nearest(const struct accel *a, size_t node,
 	struct ray_slab rs;
 
 	ray_slab_init(&rs, &r);
-	if (v->floats) {
+	if (v->floats && float_fma_ray(&r, v->s.t_min[i])) {
 		struct walk_ray_float w;
 		walk_ray_float_init(&w, &rs);
 		walk_avx512_float_nearest_from(a, node, &w, &r, v->s.t_min[i], b);
@@ -267,7 +282,7 @@ static inline bool rays8_lane_occluded(const struct accel *a, size_t node,
 	struct ray_slab rs;
 
 	ray_slab_init(&rs, &r);
-	if (v->floats) {
+	if (v->floats && float_fma_ray(&r, v->s.t_min[i])) {
 		struct walk_ray_float w;
 		walk_ray_float_init(&w, &rs);
 		return walk_avx512_float_occluded_from(a, node, &w, &r, v->s.t_min[i], t_max);
