@@ -5,12 +5,12 @@
  * are most of the step's time); the runs' refs are then closed up and
  * their bounds merged in the scene's order, so the result is the same to
  * the bit for any number of threads. */
-#include <pthread.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <string.h>
 
 #include "accel/accel_build.h"
+#include "base/thread.h"
 
 /* Refs are bounded in runs of this many, while they are still in the
  * first-level cache. */
@@ -79,8 +79,6 @@ size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, s
 			  int threads, struct build_box *box, struct build_box *centres)
 {
 	struct collect_part part[COLLECT_THREADS_MAX];
-	pthread_t thread[COLLECT_THREADS_MAX];
-	bool started[COLLECT_THREADS_MAX];
 	size_t n_parts, k, n_bounded = 0;
 
 	n_parts = threads < 1 ? 1 : (size_t)threads;
@@ -98,15 +96,7 @@ size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, s
 	}
 	/* This thread takes the first run; a thread that cannot be started
 	 * leaves its run to this one. */
-	for (k = 1; k < n_parts; k++)
-		started[k] = pthread_create(&thread[k], NULL, collect_thread, &part[k]) == 0;
-	collect_part(&part[0]);
-	for (k = 1; k < n_parts; k++) {
-		if (started[k])
-			pthread_join(thread[k], NULL);
-		else
-			collect_part(&part[k]);
-	}
+	rt_run_parts(part, sizeof(part[0]), (int)n_parts, collect_thread);
 	/* Each run's refs follow the last's, and its bounds grow the whole's
 	 * as its refs would one by one: a minimum or maximum met again stays
 	 * the one met first. */

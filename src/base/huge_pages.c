@@ -10,14 +10,13 @@
  * up (address space only: the pages past what is written are never
  * touched but for the last huge page's rest). */
 #define _DEFAULT_SOURCE
-#include <pthread.h>
-#include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
 #include <sys/mman.h>
 #include <unistd.h>
 
 #include "base/alloc.h"
+#include "base/thread.h"
 
 #define HUGE_PAGE ((size_t)2 << 20)
 /* The most threads that zero one block (zero_huge). */
@@ -83,8 +82,6 @@ static void *zero_part_main(void *arg)
 static void zero_huge(unsigned char *p, size_t n)
 {
 	struct zero_part part[ZERO_THREADS];
-	pthread_t tid[ZERO_THREADS];
-	bool started[ZERO_THREADS];
 	size_t pages = (n + HUGE_PAGE - 1) / HUGE_PAGE, each, at = 0;
 	long cpus = sysconf(_SC_NPROCESSORS_ONLN);
 	int k = cpus < 1 ? 1 : cpus > ZERO_THREADS ? ZERO_THREADS : (int)cpus, i;
@@ -99,15 +96,8 @@ static void zero_huge(unsigned char *p, size_t n)
 		part[i].p = p + at;
 		part[i].n = n - at < each ? n - at : each;
 		at += part[i].n;
-		started[i] = i > 0 && pthread_create(&tid[i], NULL, zero_part_main, &part[i]) == 0;
 	}
-	zero_part_main(&part[0]);
-	for (i = 1; i < k; i++) {
-		if (started[i])
-			pthread_join(tid[i], NULL);
-		else
-			zero_part_main(&part[i]);
-	}
+	rt_run_parts(part, sizeof(part[0]), k, zero_part_main);
 }
 
 void *rt_calloc_huge(size_t count, size_t size)

@@ -24,3 +24,23 @@ int rt_thread_start(pthread_t *t, void *(*fn)(void *), void *arg)
 		pthread_attr_destroy(&attr);
 	return rc;
 }
+
+void rt_run_parts(void *parts, size_t size, int n, void *(*fn)(void *))
+{
+	pthread_t tid[RT_PARTS_MAX];
+	bool started[RT_PARTS_MAX];
+	char *p = parts;
+	int k;
+
+	if (n < 1)
+		return;
+	for (k = 1; k < n && k < RT_PARTS_MAX; k++)
+		started[k] = pthread_create(&tid[k], NULL, fn, p + (size_t)k * size) == 0;
+	fn(p);
+	for (k = 1; k < n; k++) {
+		if (k < RT_PARTS_MAX && started[k])
+			pthread_join(tid[k], NULL);
+		else
+			fn(p + (size_t)k * size);
+	}
+}

@@ -16,4 +16,15 @@
  * error pthread_create returned. */
 int rt_thread_start(pthread_t *t, void *(*fn)(void *), void *arg);
 
+/* The parts a job is cut into that rt_run_parts starts threads for; more
+ * run on the calling thread. */
+#define RT_PARTS_MAX 64
+
+/* fn on each of n parts, part k at (char *)parts + k * size: the first
+ * on the calling thread, the others on threads of their own (the
+ * default attributes: the parts' work is shallow), and a part whose
+ * thread cannot be started on the calling thread once the rest are done.
+ * Returns when every part has run. */
+void rt_run_parts(void *parts, size_t size, int n, void *(*fn)(void *));
+
 #endif

@@ -30,6 +30,7 @@
 #endif
 
 #include "base/alloc.h"
+#include "base/thread.h"
 #include "image/png_deflate.h"
 #include "image/png_idat.h"
 
@@ -230,7 +231,6 @@ void png_idat_strips_band_done(struct png_idat_strips *st, int band, int thread)
 struct png_idat_worker {
 	struct png_idat_strips *st;
 	struct png_idat_coder *coder;
-	pthread_t tid;
 };
 
 /* The strips not yet done, one at a time, until none are left. */
@@ -259,7 +259,6 @@ static int png_idat_thread_count(int n_strips)
 static void png_idat_run_rest(struct png_idat_strips *st)
 {
 	struct png_idat_worker workers[PNG_IDAT_MAX_THREADS];
-	bool started[PNG_IDAT_MAX_THREADS];
 	int t, n = 0, s;
 
 	for (s = 0; s < st->n_strips; s++)
@@ -271,13 +270,10 @@ static void png_idat_run_rest(struct png_idat_strips *st)
 	for (t = 0; t < n; t++) {
 		workers[t].st = st;
 		workers[t].coder = &st->coders[t];
-		started[t] = t > 0 && pthread_create(&workers[t].tid, NULL, png_idat_worker_main,
-						     &workers[t]) == 0;
 	}
-	png_idat_worker_main(&workers[0]);
-	for (t = 1; t < n; t++)
-		if (started[t])
-			pthread_join(workers[t].tid, NULL);
+	/* A worker whose thread cannot be started then finds no strip
+	 * left. */
+	rt_run_parts(workers, sizeof(workers[0]), n, png_idat_worker_main);
 }
 
 /* The zlib stream's header: deflate, 32 KiB window, fastest. */
