@@ -75,10 +75,10 @@ static void *zero_part_main(void *arg)
  * reports free blocks to the host, which drops them) costs it some
  * milliseconds, during which the processor runs nothing else: a lone
  * thread paid for every page while the other processors waited.  The
- * 1536 px image's four pages took 8-15 ms so, on one run in two of
- * `make bench`; on two threads half that (0.7 ms -> 0.8 ms when the
- * pages are at hand).  A thread that cannot be started leaves its part
- * to the calling one. */
+ * 1536 px image's four pages took 5-16 ms so in about one run in two a
+ * second apart; on two threads about half that (and 0.8 ms for 0.7 when
+ * the pages are at hand).  A thread that cannot be started leaves its
+ * part to the calling one (rt_run_parts). */
 static void zero_huge(unsigned char *p, size_t n)
 {
 	struct zero_part part[ZERO_THREADS];
