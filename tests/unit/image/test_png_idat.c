@@ -46,7 +46,7 @@ static void check_stream(const struct image *img, const struct png_idat *z)
 
 		assert_int_equal(f[0], 2);	/* Up */
 		for (x = 0; x < stride; x++) {
-			unsigned above = y > 0 ? row[x - stride] : 0;
+			unsigned above = y > 0 ? (row - stride)[x] : 0;
 			assert_int_equal((f[1 + x] + above) & 255u, row[x]);
 		}
 	}

@@ -13,7 +13,7 @@ static const double pi = 3.14159265358979323846;
 
 static void init_default(struct camera *c, int size)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct diag d;
 
 	camera_params_default(&p);
@@ -28,7 +28,7 @@ static double angle_between(struct vec3 a, struct vec3 b)
 
 static void test_camera_defaults(void **state)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 
 	(void)state;
 	camera_params_default(&p);
@@ -98,7 +98,7 @@ static void test_camera_up_is_up_right_is_right(void **state)
 
 static void test_camera_field_of_view(void **state)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct camera c;
 	struct diag d;
 	struct ray r;
@@ -138,7 +138,7 @@ static void test_camera_size_one(void **state)
 
 static void test_camera_custom_view(void **state)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct camera c;
 	struct diag d;
 	struct ray r;
@@ -179,7 +179,7 @@ static void expect_invalid(const struct camera_params *p, int size, const char *
 static void test_camera_errors(void **state)
 {
 	static const double bad_fov[] = { 0.0, -5.0, 180.0, 200.0 };
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct camera c;
 	struct diag d;
 	size_t i;
@@ -219,7 +219,7 @@ static void test_camera_errors(void **state)
  * (1, 0, 0), up (0, 0, 1)) with the given near plane, aspect and fov. */
 static void init_nearfar(struct camera *c, double near, double aspect, double fov, int size)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct diag d;
 
 	camera_params_default(&p);
@@ -237,7 +237,7 @@ static void init_nearfar(struct camera *c, double near, double aspect, double fo
  * scene-format.md refuses it.  Just below, it is fine. */
 static void test_camera_nearfar_fovx_180_refused(void **state)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct camera c;
 	struct diag d;
 
@@ -331,7 +331,7 @@ static void test_camera_nearfar_plane(void **state)
  * aspect of 1 (FOVX = FOVY) for the directions. */
 static void test_camera_classic_unchanged(void **state)
 {
-	struct camera_params p;
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct camera a, b;
 	struct diag d;
 	int px, py;
@@ -418,7 +418,7 @@ static void test_camera_span_is_camera_ray(void **state)
 
 	(void)state;
 	for (k = 0; k < sizeof(views) / sizeof(views[0]); k++) {
-		struct camera_params p;
+		struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 		struct camera c;
 		struct diag d;
 		int x0, n, py;

@@ -23,7 +23,9 @@ static void put(struct text *t, const char *fmt, ...)
 
 	for (;;) {
 		va_start(ap, fmt);
-		n = vsnprintf(t->s + t->len, t->cap - t->len, fmt, ap);
+		/* No buffer yet: vsnprintf(NULL, 0) only measures (NULL + 0 is
+		 * undefined in C, which clang's checks catch). */
+		n = vsnprintf(t->s ? t->s + t->len : NULL, t->cap - t->len, fmt, ap);
 		va_end(ap);
 		assert_true(n >= 0);
 		if ((size_t)n < t->cap - t->len)
