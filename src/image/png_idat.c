@@ -321,8 +321,8 @@ static const unsigned char *png_idat_piece(const struct png_idat_strips *st, int
 	return st->trailer;
 }
 
-/* The sealed stream's pieces joined. */
-static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
+/* The sealed stream's length: its pieces'. */
+static size_t png_idat_stream_len(const struct png_idat_strips *st)
 {
 	size_t total = 0, len;
 	int k;
@@ -331,7 +331,16 @@ static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out,
 		png_idat_piece(st, k, &len);
 		total += len;
 	}
-	out->data = rt_malloc(total);
+	return total;
+}
+
+/* The sealed stream's pieces joined. */
+static int png_idat_join(const struct png_idat_strips *st, struct png_idat *out, struct diag *d)
+{
+	size_t len;
+	int k;
+
+	out->data = rt_malloc(png_idat_stream_len(st));
 	if (!out->data)
 		return diag_fail(d, RT_E_NOMEM, "out of memory compressing the PNG");
 	out->len = 0;
@@ -408,15 +417,10 @@ static void png_idat_warning(png_structp png, png_const_charp msg)
 static void png_idat_chunks(struct png_idat_writer *w)
 {
 	static const png_byte idat[5] = "IDAT";
-	size_t total = 0, pos, len, used = 0;
+	size_t total = png_idat_stream_len(w->st), pos, len, used = 0;
 	const unsigned char *p;
-	int k, n = w->st->n_strips + 2;
+	int k = 0, n = w->st->n_strips + 2;
 
-	for (k = 0; k < n; k++) {
-		png_idat_piece(w->st, k, &len);
-		total += len;
-	}
-	k = 0;
 	p = png_idat_piece(w->st, k, &len);
 	for (pos = 0; pos < total; pos += PNG_IDAT_CHUNK) {
 		size_t left = total - pos < PNG_IDAT_CHUNK ? total - pos : PNG_IDAT_CHUNK;
