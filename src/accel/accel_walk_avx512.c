@@ -42,12 +42,17 @@ static inline __m256 float_set1(double v)
 	return _mm256_broadcastss_ps(_mm_cvtsd_ss(_mm_setzero_ps(), _mm_set_sd(v)));
 }
 
+/* Whether r moves along every axis, as slab_f needs. */
+static inline bool ray_moves_on_every_axis(const struct ray *r)
+{
+	return r->dir.x != 0.0 && r->dir.y != 0.0 && r->dir.z != 0.0;
+}
+
 /* Whether the float walks can take r from t_min: the rays float_box_ray
- * holds that move along every axis (slab_f); the others take the double
- * walks. */
+ * holds that move along every axis; the others take the double walks. */
 static inline bool float_fma_ray(const struct ray *r, double t_min)
 {
-	return float_box_ray(r, t_min) && r->dir.x != 0.0 && r->dir.y != 0.0 && r->dir.z != 0.0;
+	return float_box_ray(r, t_min) && ray_moves_on_every_axis(r);
 }
 
 struct walk_ray_float {
@@ -264,7 +269,8 @@ static inline void rays8_lane_nearest(const struct accel *a, size_t node,
 	struct ray_slab rs;
 
 	ray_slab_init(&rs, &r);
-	if (v->floats && float_fma_ray(&r, v->s.t_min[i])) {
+	/* v->floats: float_box_ray holds for every lane already. */
+	if (v->floats && ray_moves_on_every_axis(&r)) {
 		struct walk_ray_float w;
 		walk_ray_float_init(&w, &rs);
 		walk_avx512_float_nearest_from(a, node, &w, &r, v->s.t_min[i], b);
@@ -282,7 +288,8 @@ static inline bool rays8_lane_occluded(const struct accel *a, size_t node,
 	struct ray_slab rs;
 
 	ray_slab_init(&rs, &r);
-	if (v->floats && float_fma_ray(&r, v->s.t_min[i])) {
+	/* v->floats: float_box_ray holds for every lane already. */
+	if (v->floats && ray_moves_on_every_axis(&r)) {
 		struct walk_ray_float w;
 		walk_ray_float_init(&w, &rs);
 		return walk_avx512_float_occluded_from(a, node, &w, &r, v->s.t_min[i], t_max);
