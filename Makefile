@@ -96,7 +96,7 @@ plugins: $(PLUGINS)
 # ---- the tests ------------------------------------------------------------
 UNIT_SRC := $(wildcard tests/unit/*/test_*.c)
 UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/san/tests/%)
-UNIT_SHARED_DIR ?= $(abspath ../shared)
+UNIT_DATA_DIR ?= $(abspath tests/data)
 
 # The suites of `make check`, in this order: the fast and local first (the
 # library's units, then the programs end to end, then hostile input), the
@@ -195,7 +195,7 @@ $(BUILD)/imgcmp $(BUILD)/imgfilter: $(BUILD)/%: $(BUILD)/tests/tools/%.o $(BUILD
 # Unit tests: one program per test file, the sanitized library, and the
 # viewer's GL-free modules for the viewer's tests.
 $(BUILD)/san/tests/%.o: ALL_CFLAGS += -Itests/unit -Iviewer \
-	-DRT_TEST_SHARED_DIR='"$(UNIT_SHARED_DIR)"' -DRT_TEST_PLUGIN_DIR='"$(abspath $(BUILD))/plugins"'
+	-DRT_TEST_DATA_DIR='"$(UNIT_DATA_DIR)"' -DRT_TEST_PLUGIN_DIR='"$(abspath $(BUILD))/plugins"'
 # The plugins' and the loader's tests load the plugins of build/plugins/.
 $(filter $(BUILD)/san/tests/unit/plugins/% $(BUILD)/san/tests/unit/plugin/%,$(UNIT_BIN)): $(PLUGINS)
 $(BUILD)/san/tests/unit/viewer/test_%: $(BUILD)/san/tests/unit/viewer/test_%.o \
@@ -283,7 +283,7 @@ embreecheck: all
 refcheck: all
 	@python3 tests/reference/random_check.py $(BUILD)/whitted 24 2026 80
 mistakecheck: all
-	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_SHARED_DIR)
+	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_DATA_DIR)
 comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
 reportcheck: all

@@ -238,7 +238,7 @@ PY
 	# A course file with 9 lights, the slowest to shade, at the same size:
 	# its image upside down and brighter by 20 levels, which no cause
 	# explains (every pixel differs, every cause is ranked).
-	SAD=${SHARED:-../shared}/course-files/sadathossain01.txt
+	SAD=tests/data/course-files/sadathossain01.txt
 	if [ -f "$SAD" ]; then
 		"$WHITTED" -q -s 768 -j "$THREADS" -o "$DIR/compare-sad-ref.ppm" "$SAD"
 		python3 - "$DIR/compare-sad-ref.ppm" "$DIR/compare-sad-wrong.ppm" <<'PY'

@@ -2,7 +2,7 @@
 # The cross-validation against POV-Ray 3.7: renders every scene in scenes/
 # (each in its own dialect; a scene whose lights fall off is measured, not
 # gated, see below), some camera, floor and recursion variants, and the
-# renderable real-world scenes of ../shared/real-scenes (each of which must
+# renderable real-world scenes of tests/data/real-scenes (each of which must
 # be there), with `whitted --clamp final` and with POV-Ray from scene2pov's
 # export, and compares them with imgcmp's gate (PSNR >= 60 dB, <= 0.2% of
 # pixels off by >2 levels, <= 0.02% by >8).  Checks the camera apart from
@@ -223,27 +223,27 @@ case_run nearfar-above "$s/nearfar.txt" --eye 60,-260,140
 case_run nearfar-rolled "$s/nearfar.txt" --eye -160,-160,60 --look 0,0,20 --up 0.3,0,1
 case_run nearfar-horizon "$s/nearfar.txt" --eye 0,-300,8 --look 0,0,8
 
-# Real-world files (not ours), from the shared directory beside the repo.
+# Real-world files (not ours), copied into tests/data/.
 # Each listed file must be there: a missing one fails the run, since a
 # comparison that was not made must not read as passed.
-real="$root/../shared/real-scenes"
+real="$root/tests/data/real-scenes"
 for f in anachor pistachio102 adibashaira ajakil mdraihansobhan; do
 	if [ -f "$real/$f.txt" ]; then
 		case_run "real-$f" "$real/$f.txt"
 	else
-		missing "real-$f" "$real/$f.txt is missing (clone shared/ beside the repo)"
+		missing "real-$f" "$real/$f.txt is missing"
 	fi
 done
 
 # The course's own files of the spot and pyramid dialects (no falloff:
 # POV-Ray can express them exactly).  The nearfar ones, whose lights fall
 # off, are gated against the reference renderer by refcheck.
-course="$root/../shared/course-files"
+course="$root/tests/data/course-files"
 for f in munzer2 sadathossain01 ishtiaqniloy; do
 	if [ -f "$course/$f.txt" ]; then
 		case_run "course-$f" "$course/$f.txt"
 	else
-		missing "course-$f" "$course/$f.txt is missing (clone shared/ beside the repo)"
+		missing "course-$f" "$course/$f.txt is missing"
 	fi
 done
 
@@ -268,7 +268,7 @@ if [ -f "$pl/quad.so" ] && [ -f "$pl/cylinder.so" ] && [ -f "$pl/torus.so" ]; th
 	if [ -f "$course/abir66-quad.txt" ]; then
 		case_run course-abir66-quad "$course/abir66-quad.txt" --plugin "$pl/quad.so"
 	else
-		missing course-abir66-quad "$course/abir66-quad.txt is missing (clone shared/ beside the repo)"
+		missing course-abir66-quad "$course/abir66-quad.txt is missing"
 	fi
 else
 	missing plugins "$pl/*.so are not built (make plugins)"

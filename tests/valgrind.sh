@@ -37,7 +37,7 @@ vg "scene.txt bmp" 0 -s 16 -j 2 -o out.bmp "$ROOT/scenes/scene.txt"
 vg "scene.txt ppm to stdout" 0 -s 16 -j 1 -o /dev/stdout --format ppm "$ROOT/scenes/scene.txt"
 vg "scene.txt from stdin" 0 -s 16 -o out.png - <"$ROOT/scenes/scene.txt"
 vg "test scene, final clamp, no floor" 0 -s 16 --test-scene --clamp final --no-floor -o out.png
-for f in "$SHARED"/real-scenes/*.txt; do
+for f in "$DATA"/real-scenes/*.txt; do
 	case $(basename "$f") in
 	apurbostarry.txt | nazmultakbir.txt) want=1 ;;
 	*) want=0 ;;

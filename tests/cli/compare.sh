@@ -192,7 +192,7 @@ check outlier-text grep -q 'PSNR of gate  *inf dB .*the worst 1 pixel' "$T/out"
 
 # A scene symmetric left-right with an even number of tiles: mirrored and
 # the tiles swapped are the same image; neither is preferred.
-SYM=$SHARED/course-files/sadathossain01.txt
+SYM=$DATA/course-files/sadathossain01.txt
 python3 "$REF_RENDER" "$SYM" "$I/sym.ppm" --size 30 --mistake floor-swapped
 run compare -q -s 30 --json "$SYM" "$I/sym.ppm"
 check tie-json python3 -c '

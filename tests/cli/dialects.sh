@@ -1,14 +1,14 @@
 #!/bin/bash
 # The four dialects of the course format end to end (scene-format.md):
-# every file of ../shared/course-files and ../shared/real-scenes with the
+# every file of tests/data/course-files and tests/data/real-scenes with the
 # outcome its README names (the dialect note, the notes, the error's place
 # and message), --dialect forcing each dialect, the same files in scene2pov,
 # and no output file for any refused one.
 SUITE=dialects
 . "$(dirname "$0")/lib.sh"
 P=$ROOT/build/scene2pov
-CF=$SHARED/course-files
-RS=$SHARED/real-scenes
+CF=$DATA/course-files
+RS=$DATA/real-scenes
 
 # renders NAME FILE DIALECT-NOTE [OTHER-NOTE-PATTERN...]: the file renders
 # to a PNG, stderr holds the dialect note (exactly once) and each pattern.

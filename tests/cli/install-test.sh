@@ -132,7 +132,7 @@ if (cd "$APP" && $CC -std=c99 -Wall -Wextra -Wpedantic -Werror -o app main.c $cf
 	render_same scene.txt 64 "$ROOT/scenes/scene.txt"
 	render_same quadric.txt 48 "$ROOT/scenes/quadric.txt"
 	render_same mirrors.txt 40 "$ROOT/scenes/mirrors.txt"
-	render_same anachor.txt 32 "$SHARED/real-scenes/anachor.txt"
+	render_same anachor.txt 32 "$DATA/real-scenes/anachor.txt"
 	render_same test-scene 32 --test-scene
 	# A bad scene fails with its location, through the API's diagnostics.
 	printf '4\n16\n1\nsphere\n0 0 10\n-3\n' >"$APP/bad.txt"

@@ -1,8 +1,8 @@
 # Shared helpers of the CLI test scripts (sourced, not run).  Sets ROOT,
-# SHARED, W (the whitted binary) and T (a scratch directory removed on exit),
+# DATA (the course files copied into tests/data), W (the whitted binary) and T (a scratch directory removed on exit),
 # and counts checks: ok NAME / bad NAME WHY, then finish prints the summary.
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-SHARED=$ROOT/../shared
+DATA=$ROOT/tests/data
 W=$ROOT/build/whitted
 pass=0
 fail=0
@@ -29,8 +29,8 @@ if [ ! -x "$W" ]; then
 	echo "$SUITE: 0 passed, 1 failed"
 	exit 1
 fi
-if [ ! -f "$SHARED/scene-format.md" ]; then
-	echo "$SUITE: the shared directory $SHARED is missing"
+if [ ! -f "$DATA/README.md" ]; then
+	echo "$SUITE: the test data $DATA is missing"
 	echo "$SUITE: 0 passed, 1 failed"
 	exit 1
 fi

@@ -22,8 +22,7 @@ JOBS=${JOBS:-2}
 [ -z "${NEWSHAPE_KEEP:-}" ] || trap 'echo "newshape: kept $T"' EXIT
 
 # The copy: the working tree as it is (uncommitted work included), without
-# .git, build/ and out/; ../shared beside it as beside the original.
-ln -s "$SHARED" "$T/shared"
+# .git, build/ and out/ (tests/data, the course files, travels with it).
 mkdir -p "$C"
 tar -C "$ROOT" --exclude=./.git --exclude=./build --exclude=./out --exclude='*.o' --exclude='*.d' \
 	-cf - . | tar -C "$C" -xf -
@@ -95,7 +94,7 @@ done
 to_balls() { sed -E 's/^([[:space:]]*)sphere([[:space:]]|$)/\1ball\2/' "$1"; }
 mkdir -p "$T/s" "$T/b"
 n_scenes=0
-for f in "$ROOT"/scenes/*.txt "$SHARED/real-scenes/anachor.txt" "$SHARED/real-scenes/pistachio102.txt"; do
+for f in "$ROOT"/scenes/*.txt "$DATA/real-scenes/anachor.txt" "$DATA/real-scenes/pistachio102.txt"; do
 	grep -qE '^[[:space:]]*sphere([[:space:]]|$)' "$f" || continue
 	name=${f##*/}
 	n_scenes=$((n_scenes + 1))

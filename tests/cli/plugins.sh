@@ -189,7 +189,7 @@ check "--help names --plugin and --list-shapes" [ $? -eq 0 ]
 
 # The course's student file with ten quads (refused at 65:1 without the
 # plugin: tests/cli/dialects.sh; matched against POV-Ray by povcheck).
-"$W" -s 32 --plugin "$P/quad.so" -o abir.png "$SHARED/course-files/abir66-quad.txt" 2>err
+"$W" -s 32 --plugin "$P/quad.so" -o abir.png "$DATA/course-files/abir66-quad.txt" 2>err
 check "abir66-quad.txt renders with the quad plugin ($(head -c 200 err))" [ $? -eq 0 -a -s abir.png ]
 
 # Threads and tiles: the same image.

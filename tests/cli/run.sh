@@ -1,7 +1,7 @@
 #!/bin/bash
 # End-to-end tests of the whitted command line: exit codes, --help and
 # --version, option values, odd but valid scenes, the real scene files of
-# ../shared/real-scenes, every malformed file of tests/errors (with its
+# tests/data/real-scenes, every malformed file of tests/errors (with its
 # location and message from tests/errors/expected.tsv), output names and
 # formats, atomic replacement, and output to pipes and /dev/stdout.
 SUITE=clitest
@@ -157,7 +157,7 @@ same_image no-trailing-newline "$BASE" "$(printf '%b' "$BASE")"
 real_ok() {
 	local f=$1 notes=$2 pattern=$3
 	clean_wd
-	run -s 16 -o real.png "$SHARED/real-scenes/$f"
+	run -s 16 -o real.png "$DATA/real-scenes/$f"
 	if [ "$rc" -ne 0 ]; then bad "real $f" "exit $rc: $(cat "$T/err")"; return; fi
 	if [ "$(dialect_notes)" -ne 1 ]; then bad "real $f" "not one dialect note: $(cat "$T/err")"; return; fi
 	if [ "$(other_lines)" -ne "$notes" ]; then bad "real $f" "$(other_lines) stderr lines besides the dialect note, expected $notes: $(cat "$T/err")"; return; fi
@@ -170,16 +170,16 @@ real_ok anachor.txt 1 "$NOTE_TRAIL"
 real_ok pistachio102.txt 0
 real_ok adibashaira.txt 0
 real_ok ajakil.txt 0
-# Read as the spot dialect now (../shared/course-files/README.md): its
+# Read as the spot dialect now (tests/data/course-files/README.md): its
 # spotlight section is data, not a trailer.
 real_ok mdraihansobhan.txt 0
 expect_error "real apurbostarry.txt" 1 "real-scenes/apurbostarry.txt:48:2: error: expected an integer (light count), found end of file" \
-	-s 16 -o real.png "$SHARED/real-scenes/apurbostarry.txt"
+	-s 16 -o real.png "$DATA/real-scenes/apurbostarry.txt"
 check "real apurbostarry.txt one line" [ "$(err_lines)" -eq 1 ]
 expect_error "real nazmultakbir.txt" 1 "real-scenes/nazmultakbir.txt:10:9: error: expected an object keyword" \
-	-s 16 -o real.png "$SHARED/real-scenes/nazmultakbir.txt"
+	-s 16 -o real.png "$DATA/real-scenes/nazmultakbir.txt"
 check "real nazmultakbir.txt one line" [ "$(err_lines)" -eq 1 ]
-n_real=$(ls "$SHARED"/real-scenes/*.txt | wc -l)
+n_real=$(ls "$DATA"/real-scenes/*.txt | wc -l)
 check "real-scenes: all 7 files tested" [ "$n_real" -eq 7 ]
 
 # Every malformed file: exit 1, exactly one stderr line

@@ -23,7 +23,7 @@ the wrap of the truncated byte (no-clamp).  A symmetric course scene
 (sadathossain01: mirrored and floor-swapped can be the same image) counts
 a cause as named when it is among those ranked first equally.
 
-  mistakes_check.py WHITTED [SHARED_DIR]
+  mistakes_check.py WHITTED [DATA_DIR]   (default tests/data)
 """
 import json
 import os
@@ -51,14 +51,14 @@ INDEPENDENT = [('light-behind-signed', ['--mistake', 'light-behind-signed'], 'li
 LARGE = ('scene.txt', 201, TRANSFORMS + ['white-highlight', 'no-shadows'])
 
 
-def scenes(shared):
+def scenes(data):
     own = ['scene.txt', 'backlit.txt', 'bright-reflection.txt', 'mirrors.txt', 'shadows.txt',
            'spot.txt', 'pyramid.txt', 'nearfar.txt', 'quadric.txt']
     files = [os.path.join(ROOT, 'scenes', f) for f in own]
-    files += [os.path.join(shared, 'course-files', f) for f in ('munzer2.txt', 'akib1689.txt',
+    files += [os.path.join(data, 'course-files', f) for f in ('munzer2.txt', 'akib1689.txt',
                                                                  'ishtiaqniloy.txt')]
-    files += [os.path.join(shared, 'real-scenes', 'adibashaira.txt')]
-    files += [os.path.join(shared, 'course-files', 'sadathossain01.txt')]
+    files += [os.path.join(data, 'real-scenes', 'adibashaira.txt')]
+    files += [os.path.join(data, 'course-files', 'sadathossain01.txt')]
     missing = [f for f in files if not os.path.exists(f)]
     if missing:
         sys.exit('mistakes_check: FAIL: missing scene files: %s' % ', '.join(missing))
@@ -192,8 +192,8 @@ def one_scene(job):
 
 def main():
     whitted = os.path.abspath(sys.argv[1])
-    shared = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, '..', 'shared')
-    files = scenes(shared)
+    data = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, 'tests', 'data')
+    files = scenes(data)
     with tempfile.TemporaryDirectory() as tmp:
         jobs = [(whitted, os.path.join(ROOT, 'scenes', LARGE[0]), LARGE[1], tmp, LARGE[2],
                  '.bmp')]

@@ -303,15 +303,15 @@ def main():
                 check.run('%s %2d' % (name, k), scene, extra, lights)
         fixed = sorted(glob.glob(os.path.join(HERE, '..', '..', 'scenes', '*.txt')) +
                        glob.glob(os.path.join(HERE, '..', 'scenes', '*.txt')))
-        # The course's own files of every dialect beside the repo (each
-        # must be there): the handouts' scenes, falloff included.
-        shared = os.path.join(HERE, '..', '..', '..', 'shared', 'course-files')
+        # The course's own files of every dialect, copied into tests/data
+        # (each must be there): the handouts' scenes, falloff included.
+        course_dir = os.path.join(HERE, '..', 'data', 'course-files')
         course = ['munzer2', 'sadathossain01', 'an-akhand', 'rafid013', 'tanjeem29',
                   'akib1689', 'ishtiaqniloy']
         for name in course:
-            scene = os.path.join(shared, name + '.txt')
+            scene = os.path.join(course_dir, name + '.txt')
             if not os.path.isfile(scene):
-                print('refcheck: %s is missing (clone shared/ beside the repo)' % scene)
+                print('refcheck: %s is missing' % scene)
                 check.failed += 1
                 continue
             check.run(name[:14], scene, ['--size', size], '-')

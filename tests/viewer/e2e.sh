@@ -11,15 +11,15 @@
 # nearfar scene whose near plane hides a cube and cuts a sphere.
 # Usage: tests/viewer/e2e.sh BUILD/whitted-view BUILD/whitted
 # Needs Xvfb, xdotool and ImageMagick (import, convert, compare), and the
-# course files of ../shared (or $WHITTED_SHARED_DIR).
+# course files of tests/data.
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
 viewer=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 whitted=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
-shared=${WHITTED_SHARED_DIR:-$root/../shared}
+data=$root/tests/data
 scene=$root/scenes/scene.txt
-spot_scene=$shared/course-files/munzer2.txt
-nearfar_scene=$shared/course-files/akib1689.txt
+spot_scene=$data/course-files/munzer2.txt
+nearfar_scene=$data/course-files/akib1689.txt
 near_scene=$root/tests/scenes/near-plane.txt
 pass=0 fail=0
 xvfb_pid="" viewer_pid=""
@@ -58,7 +58,7 @@ for tool in Xvfb xdotool import convert compare; do
 	command -v "$tool" >/dev/null 2>&1 || { echo "viewer-e2e: FAIL: $tool is missing"; exit 1; }
 done
 for f in "$spot_scene" "$nearfar_scene" "$near_scene"; do
-	[ -f "$f" ] || { echo "viewer-e2e: FAIL: $f is missing (set WHITTED_SHARED_DIR)"; exit 1; }
+	[ -f "$f" ] || { echo "viewer-e2e: FAIL: $f is missing"; exit 1; }
 done
 cd "$tmp" || exit 1
 

@@ -1,6 +1,6 @@
 /* The scene parser: every rule of scene-format.md, every error with its
  * line, column and message, the limits, and the real scene files that
- * circulate with the course (../shared/real-scenes). */
+ * circulate with the course (tests/data/real-scenes). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,8 +21,8 @@
 #include "whitted/render.h"
 #include "support.h"
 
-#ifndef RT_TEST_SHARED_DIR
-#define RT_TEST_SHARED_DIR "../shared"
+#ifndef RT_TEST_DATA_DIR
+#define RT_TEST_DATA_DIR "tests/data"
 #endif
 
 /* The notes of a read, apart from the one that says which dialect it was
@@ -636,19 +636,15 @@ static void test_parse_test_scene(void **state)
 	scene_destroy(s);
 }
 
-/* The real scene files: ../shared/real-scenes, or $WHITTED_SHARED_DIR.
- * When they are missing the tests fail: they are part of the suite. */
+/* The real scene files, copied into tests/data/real-scenes.  When they
+ * are missing the tests fail: they are part of the suite. */
 static void real_path(char *buf, size_t size, const char *name)
 {
-	const char *dir = getenv("WHITTED_SHARED_DIR");
 	struct stat st;
 
-	if (!dir || !*dir)
-		dir = RT_TEST_SHARED_DIR;
-	snprintf(buf, size, "%s/real-scenes/%s", dir, name);
+	snprintf(buf, size, "%s/real-scenes/%s", RT_TEST_DATA_DIR, name);
 	if (stat(buf, &st) != 0) {
-		print_error("%s is missing: the real scene files belong beside the repository "
-			    "(set WHITTED_SHARED_DIR to the shared directory)\n", buf);
+		print_error("%s is missing: the real scene files are in tests/data\n", buf);
 		fail();
 	}
 }
@@ -789,7 +785,7 @@ static void test_parse_real_mdraihansobhan(void **state)
 	assert_int_equal(s->n_shapes, 8);
 	assert_int_equal(s->n_lights, 5);
 	assert_true(s->lights[4].spot);
-	/* Read as the spot dialect (../shared/course-files/README.md): its
+	/* Read as the spot dialect (tests/data/course-files/README.md): its
 	 * spotlight section (lines 74 to 78) is data, a fifth light. */
 	assert_int_equal(ns.n, 0);
 	assert_string_equal(ns.dialect.msg, "read as the spot dialect (4 point lights, 1 spotlight)");
