@@ -28,10 +28,12 @@ struct camera {
 	struct vec3 eye;
 	struct vec3 forward, right, up;	/* orthonormal, right = forward x up */
 	double half_height;		/* tan(fov / 2) */
-	double pixel_scale;		/* 2 half_height / size: a pixel's height at distance 1 */
-	int size;			/* pixels per side */
-	double half_width;		/* tan(fovx / 2); half_height when aspect is 0 */
-	double pixel_scale_x;		/* 2 half_width / size: a pixel's width at distance 1 */
+	double pixel_scale;		/* 2 half_height / height: a pixel's height at distance 1 */
+	int size;			/* the width (pixels per side of a square image) */
+	int width, height;		/* the image's, in pixels */
+	double half_width;		/* tan(fovx / 2); when aspect is 0, half_height
+					 * width / height (square pixels) */
+	double pixel_scale_x;		/* 2 half_width / width: a pixel's width at distance 1 */
 	double near;			/* the image plane's distance; 0: rays start at the eye */
 };
 
@@ -41,6 +43,12 @@ void camera_params_default(struct camera_params *p);
  * times it) is outside (0, 180) degrees, or near or aspect is negative or
  * not finite. */
 int camera_init(struct camera *c, const struct camera_params *p, int size, struct diag *d);
+/* The same for an image of width x height pixels: the vertical field of
+ * view spans the height; the horizontal one is aspect times it (nearfar's
+ * ASPECT) or, when aspect is 0, what square pixels give.  camera_init is
+ * this with width = height = size, bit for bit. */
+int camera_init_rect(struct camera *c, const struct camera_params *p, int width, int height,
+		     struct diag *d);
 /* The unit-direction ray through the centre of pixel (px, py); py = 0 is the
  * top row.  It starts at the eye, or with near > 0 at the pixel's centre on
  * the image plane: eye + near (forward + u right + v up), where the plane

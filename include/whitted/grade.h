@@ -9,6 +9,7 @@
 #include <signal.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "camera.h"
 #include "diag.h"
@@ -39,6 +40,11 @@ struct grade_figures {
 void grade_figures_of(const struct image *a, const struct image *b, int stride, int ox, int oy,
 		      struct grade_figures *f);
 
+/* The same over the pixels whose skip[y * width + x] is 0 (the ties of
+ * grade_tie_mask: either colour is right there). */
+void grade_figures_skipping(const struct image *a, const struct image *b, const uint8_t *skip,
+			    struct grade_figures *f);
+
 /* The mistakes, in the order of their table (ties rank in this order). */
 enum grade_cause {
 	RT_CAUSE_MIRRORED,
@@ -56,8 +62,17 @@ enum grade_cause {
 	RT_CAUSE_PIXEL_CORNERS,
 	RT_CAUSE_UNIT_STARTS,
 	RT_CAUSE_FLOOR_SWAPPED,
+	RT_CAUSE_NO_REFLECTIONS,	/* recursion level 1 */
+	RT_CAUSE_RECURSION_LEVEL,	/* another level than one more or one fewer */
+	RT_CAUSE_FLOOR_HORIZON,		/* the floor without an edge */
+	RT_CAUSE_FLOOR_SIZE,		/* the floor of another width */
+	RT_CAUSE_FLOOR_CELL,		/* the checker's cells of another size */
+	RT_CAUSE_CHECKER_PHASE,		/* the cells counted from another origin */
 	RT_CAUSE_COUNT
 };
+
+/* No second cause (struct grade_rank's also). */
+#define RT_CAUSE_NONE RT_CAUSE_COUNT
 
 struct grade_cause_text {
 	const char *id;		/* short, for scripts: "white-highlight" */
@@ -81,32 +96,106 @@ struct grade_job {
 
 struct grade_rank {
 	enum grade_cause cause;
+	enum grade_cause also;		/* a second cause at once, or RT_CAUSE_NONE */
+	/* The form of each cause that came nearest, for its detail
+	 * (grade_cause_detail): a recursion level, a width, ... */
+	int form, also_form;
 	struct grade_figures fig;	/* the cause's image against the submission */
 	bool estimated;			/* fig from a sample of the pixels only */
 	bool truncated;			/* fig of the image converted by truncation */
 	bool first_equal;		/* the same figures as the first: no preference */
 };
 
-/* The reference image, cam->size square. */
+/* What form `form` of cause c is, in words, for this job ("recursion
+ * level 2 instead of 4", "a floor 2000 wide instead of 1000"), into buf;
+ * "" when the cause has one form only. */
+void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int form, char *buf,
+			size_t size);
+
+/* The reference image, the job's camera's size. */
 int grade_render_reference(const struct grade_job *job, struct image *ref, struct diag *d);
 
 /* The reference converted by truncation, floor(255 c) of each clamped
  * channel, as the course's own code writes it (rather than rounding). */
 int grade_render_truncated(const struct grade_job *job, struct image *out, struct diag *d);
 
+/* The ties of the reference ref (job's render): the pixels whose colour
+ * changes when the camera turns by angle (radians) either way about its
+ * up or right axis, or zooms by 1 +- angle, marked 1 in mask (a byte a
+ * pixel; *n_ties of them): a ray on a checker cell's edge, a shadow ray
+ * grazing an occluder, two objects at the same distance, where a tiny
+ * change of the ray (another renderer's rounding) changes the colour and
+ * either colour is right.  With the angle of the camera fit's precision,
+ * the pixels its error may change. */
+int grade_tie_mask(const struct grade_job *job, const struct image *ref, double angle,
+		   uint8_t *mask, long *n_ties, struct diag *d);
+
+/* The most ranks grade_rank_causes gives: each cause, and pairs. */
+#define GRADE_MAX_PAIRS 12
+#define GRADE_MAX_RANKS (RT_CAUSE_COUNT + GRADE_MAX_PAIRS)
+
 /* The causes that change the image, best first (highest PSNR against sub):
  * transforms of ref exactly; renders first on a sample of the pixels, then
  * the best few again on every pixel.  With tref (the truncated reference,
  * or NULL) each cause's image is made both ways and the nearer counts.
- * Causes whose figures equal the first's are marked first_equal.  *n is
- * their number (<= RT_CAUSE_COUNT). */
+ * When no single cause explains sub, pairs of the likeliest causes (and
+ * the compositions of two transforms: a half turn, a flip with red and
+ * blue swapped) are ranked too.  Causes whose figures equal the first's
+ * are marked first_equal.  *n is their number (<= GRADE_MAX_RANKS). */
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		      const struct image *tref, const struct image *sub,
-		      struct grade_rank out[RT_CAUSE_COUNT], size_t *n, struct diag *d);
+		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d);
 
-/* The image of one cause, at full size (for the report). */
-int grade_cause_image(const struct grade_job *job, const struct image *ref, enum grade_cause c,
-		      struct image *out, struct diag *d);
+/* The image of a ranked cause (or pair), at full size (for the report). */
+int grade_cause_image(const struct grade_job *job, const struct image *ref,
+		      const struct grade_rank *r, struct image *out, struct diag *d);
+
+/* The camera found from an image (grade_fit_camera). */
+struct grade_fit {
+	struct camera_params camera;	/* the camera found */
+	double score;			/* its mean squared difference on the last level */
+	long evals;			/* candidates rendered */
+};
+
+/* Finds the camera that took sub, whose size the job's camera has: the
+ * camera whose render (job's scene and settings) comes nearest sub,
+ * searched from the n_starts cameras given (the first one's near plane
+ * and aspect are kept).  Deterministic: the same answer for any number
+ * of threads. */
+int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
+		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d);
+
+/* The object-id buffer: for each pixel (y * width + x) of the job's
+ * camera, the index in the scene (0-based, file order) of the object its
+ * primary ray hits first, GRADE_ID_FLOOR for the floor or
+ * GRADE_ID_BACKGROUND for none. */
+#define GRADE_ID_BACKGROUND (-1)
+#define GRADE_ID_FLOOR (-2)
+int grade_object_ids(const struct grade_job *job, int32_t *ids, struct diag *d);
+
+/* Where sub differs from ref, object by object (ids from
+ * grade_object_ids; the pixels skip marks left out). */
+struct grade_object {
+	long index;		/* 1-based in the file; 0 for the floor and the background */
+	const char *keyword;	/* "sphere", ...; "floor", "background" */
+	long pixels, differ;	/* its pixels, and of them those off by more than 2 levels */
+	double off2;		/* differ / pixels */
+	double psnr;		/* over its pixels; INFINITY when identical */
+};
+/* The background, the floor and each object that has pixels, in that
+ * order (objects by index), into *out (rt_free it), *n of them. */
+int grade_objects(const struct grade_job *job, const int32_t *ids, const struct image *ref,
+		  const struct image *sub, const uint8_t *skip, struct grade_object **out,
+		  size_t *n, struct diag *d);
+
+/* The picture of compare --diff: grade_diff_image's two halves, with the
+ * ties (ties[i] set; may be NULL) in blue on the right and the outline of
+ * each object whose slot is set in differs (slot 0 the background, 1 the
+ * floor, 2 + i object i of ids; ids and differs may be NULL) in cyan, and
+ * a legend in a band under them. */
+int grade_diff_picture(const struct image *ref, const struct image *sub, const uint8_t *ties,
+		       const int32_t *ids, const uint8_t *differs, struct image *out,
+		       struct diag *d);
 
 /* The picture of the difference: 2w x h, on the left |a - b| amplified 8
  * times, on the right the reference dimmed with the pixels off by more

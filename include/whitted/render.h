@@ -72,7 +72,7 @@ struct render_job {
 	void *band_ctx;
 };
 
-/* A job for the whole image that cam sees (cam->size squared): the scene's
+/* A job for the whole image that cam sees (cam->width x cam->height): the scene's
  * recursion level, clamping at every level, `threads` threads, no cancel,
  * no progress.  Callers change what they need after it. */
 void render_job_init(struct render_job *job, const struct scene *s, const struct camera *cam,

@@ -120,6 +120,7 @@ const char *scene_name(const struct scene *s);	/* the file name, for messages */
 int scene_recursion(const struct scene *s);	/* >= 1; 1 means no reflection rays */
 int scene_image_size(const struct scene *s);	/* the image is size x size */
 size_t scene_shape_count(const struct scene *s);
+bool scene_has_floor(const struct scene *s);	/* scene_add_view_floor's or --floor's */
 const struct shape *scene_shape(const struct scene *s, size_t i);
 size_t scene_light_count(const struct scene *s);
 const struct light *scene_light(const struct scene *s, size_t i);

@@ -19,6 +19,11 @@ struct scene_read_options {
 	/* RT_DIALECT_AUTO (0) detects the dialect from the text (see
 	 * docs/scene-format.md); any other value reads the file as that one. */
 	enum scene_dialect dialect;
+	/* Read as the course's count-driven programs do: once the last
+	 * section's count is read, whatever follows is ignored with a note
+	 * naming its line, where the strict reading refuses numbers that no
+	 * count describes.  For `compare --lenient` and `grade --lenient`. */
+	bool lenient;
 };
 
 /* Parses scene text; name is used in diagnostics.  Adds no floor (the

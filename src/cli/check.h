@@ -1,6 +1,7 @@
 /* What `whitted compare` and `whitted grade` share: their options, the
  * reference render, and the check of one submitted image (its figures
- * against the gate and the likely causes when it differs). */
+ * against the gate, the camera that took it when it is not the given one,
+ * and the likely causes when it differs). */
 #ifndef RT_CLI_CHECK_H
 #define RT_CLI_CHECK_H
 
@@ -12,14 +13,20 @@
 /* Exit statuses besides tool.h's: the image differs from the reference. */
 #define CHECK_EXIT_DIFFERS 3
 
+#define CHECK_MAX_SCENES 16
+
 struct check_options {
 	struct cli_scene scene;
 	int threads;
 	bool grade;			/* whitted grade (else compare) */
 	const char *diff_path;		/* compare --diff */
 	bool json;			/* compare --json */
+	bool no_fit;			/* --no-camera-fit: judge at the given camera only */
 	const char *report_path;	/* grade -o */
 	const char *csv_path;		/* grade --csv */
+	const char *marks_path;		/* grade --marks: the points table */
+	const char *scenes[CHECK_MAX_SCENES];	/* grade --scene, in order */
+	int n_scenes;
 	char **images;			/* the IMAGE operands */
 	int n_images;
 };
@@ -28,12 +35,27 @@ struct check_options {
  * status to stop with (usage error printed: 2; --help: -1 for exit 0). */
 int check_args_parse(int argc, char **argv, bool grade, struct check_options *o);
 
-struct check_reference {
-	struct scene *scene;
+/* The reference at one camera and size: its render, that render converted
+ * by truncation (made when first needed) and its ties. */
+struct check_view {
+	struct camera_params params;
 	struct camera camera;
 	struct grade_job job;
 	struct image image;
-	struct image truncated;		/* converted by truncation: made when first needed */
+	struct image truncated;
+	uint8_t *ties;			/* a byte a pixel: either colour is right */
+	long n_ties;
+	double tie_angle;		/* the camera's uncertainty the ties allow for */
+};
+
+struct check_reference {
+	struct scene *scene;
+	struct camera_params params;	/* the camera given (or the dialect's) */
+	bool camera_given;		/* --eye, --look, --up or --fov */
+	bool lenient;			/* read by the count-driven rule */
+	bool fit;			/* find the camera when the given one does not fit */
+	struct check_view view;		/* at the scene's size (or --size) */
+	struct grade_job base;		/* settings, samples, threads, cancel */
 };
 
 /* Loads the scene and renders the reference; on failure prints the error
@@ -41,31 +63,57 @@ struct check_reference {
 int check_reference_make(struct check_options *o, struct check_reference *ref);
 void check_reference_free(struct check_reference *ref);
 
+/* The reference of ref's scene seen by camera p at width x height, with
+ * ties for a camera known within angle radians; *v freed with
+ * check_view_free. */
+int check_view_make(const struct check_reference *ref, const struct camera_params *p, int width,
+		    int height, double angle, struct check_view *v, struct diag *d);
+void check_view_free(struct check_view *v);
+
 enum check_verdict {
-	CHECK_MATCH,		/* within the gate */
+	CHECK_MATCH,		/* within the gate (at the given camera, or at the one found) */
 	CHECK_DIFFERS,
-	CHECK_UNREADABLE,	/* not an image, truncated, or of another size */
+	CHECK_UNREADABLE,	/* not an image, or truncated */
 };
 
-/* How well the best cause explains a differing image. */
+/* How well the best explanation explains a differing image. */
 enum check_explained {
-	CHECK_EXPLAINED,	/* the cause's image matches the submission within the gate */
+	CHECK_EXPLAINED,	/* its image matches the submission within the gate */
 	CHECK_CLOSE,		/* much closer than the reference, not within the gate */
-	CHECK_NONE,		/* no cause comes close */
+	CHECK_NONE,		/* nothing comes close */
 };
 
 struct check_result {
 	enum check_verdict verdict;
-	struct grade_figures fig;	/* against the reference (for a truncated match,
-					 * against its truncated conversion) */
+	struct grade_figures fig;	/* against the reference at the given camera (for a
+					 * truncated match, its truncated conversion) */
 	struct grade_figures fig_rounded;	/* against the rounded reference */
 	bool truncated;			/* nearer the reference converted by truncation */
-	struct grade_rank ranks[RT_CAUSE_COUNT];
+	char size_note[200];		/* "" or why it was compared at another size */
+	bool floor_textured;		/* the floor is no two-colour checker: judged without it */
+	struct check_view own;		/* the reference at the image's size when it is
+					 * not the scene's (else empty) */
+	/* The camera: fitted when the image does not fit the given one. */
+	bool fitted, moved;
+	struct check_view found;	/* at the camera found (when moved) */
+	struct grade_figures fig_found;	/* against the reference there */
+	long fit_evals;
+	/* The causes, at the camera of the explanation (found when moved). */
+	struct grade_rank ranks[GRADE_MAX_RANKS];
 	size_t n_ranks;
 	enum check_explained explained;
+	/* Object by object, at that camera. */
+	struct grade_object *objects;
+	size_t n_objects;
+	int32_t *ids;			/* the object-id buffer there */
 	struct image image;		/* the submission (empty when unreadable) */
 	struct diag error;		/* why it is unreadable */
 };
+
+/* The view of the explanation: the camera found when it moved, else the
+ * given one at the image's size. */
+const struct check_view *check_result_view(const struct check_reference *ref,
+					   const struct check_result *res);
 
 /* Reads and checks one image.  Returns 0 with res filled (an unreadable
  * image is a verdict, not a failure), or a negative status when the check
@@ -74,10 +122,36 @@ int check_image(struct check_reference *ref, const char *path, struct check_resu
 		struct diag *d);
 void check_result_free(struct check_result *res);
 
+/* The difference picture of res: against the reference of its
+ * explanation's camera, in the conversion its verdict used, with the ties
+ * and the outlines of the objects that differ, and a legend. */
+int check_diff_picture(const struct check_reference *ref, const struct check_result *res,
+		       struct image *out, struct diag *d);
+
+/* The camera found, as whitted's options ("--eye X,Y,Z --look ...
+ * --up ... --fov F"). */
+void check_camera_options(const struct camera_params *p, char *buf, size_t size);
+
+/* A cause (or pair) of the ranking in words: "the highlight left white",
+ * "no shadows and the floor's tiles swapped", with each cause's form
+ * ("another recursion level (recursion level 2 instead of 4)"). */
+void check_cause_words(const struct check_reference *ref, const struct check_result *res,
+		       const struct grade_rank *r, char *buf, size_t size);
+/* Its id for scripts: "white-highlight", "no-shadows+floor-swapped". */
+void check_cause_id(const struct check_reference *ref, const struct grade_rank *r, char *buf,
+		    size_t size);
+/* Its fix, or both fixes joined by "; and ". */
+void check_cause_fix(const struct check_reference *ref, const struct grade_rank *r, char *buf,
+		     size_t size);
+
 /* One sentence on the likely cause ("matches the reference with ...: fix
- * ...", "closest: ...", "none of the known mistakes comes close"). */
+ * ...", "your camera differs: found ...; at that camera ...", "none of
+ * the known mistakes comes close"). */
 void check_diagnosis(const struct check_reference *ref, const struct check_result *res,
 		     char *buf, size_t size);
+/* One line on where it differs, object by object ("the 3 spheres and 2
+ * triangles match; the floor differs in 41% of its pixels"), or "". */
+void check_objects_line(const struct check_result *res, char *buf, size_t size);
 
 /* The HTML report of grade: the reference, and per image its row, the
  * figures, the submission and the difference.  Fails with the diag filled. */

@@ -13,6 +13,8 @@ enum {
 	OPT_JSON,
 	OPT_CSV,
 	OPT_SCENE,
+	OPT_NO_FIT,
+	OPT_MARKS,
 };
 
 static void check_usage(bool grade)
@@ -100,7 +102,20 @@ static int check_option(struct check_options *o, int c, const char *arg)
 	case OPT_SCENE:
 		if (!o->grade)
 			break;
-		o->scene.path = arg;
+		if (o->n_scenes == CHECK_MAX_SCENES)
+			return tool_usage_error("--scene: at most %d scenes", CHECK_MAX_SCENES);
+		o->scenes[o->n_scenes++] = arg;
+		o->scene.path = o->scenes[0];
+		return 0;
+	case OPT_NO_FIT:
+		o->no_fit = true;
+		return 0;
+	case OPT_MARKS:
+		if (!o->grade)
+			break;
+		if (arg[0] == '\0')
+			return tool_usage_error("--marks: expected a file name, found ''");
+		o->marks_path = arg;
 		return 0;
 	}
 	return -1;
@@ -113,6 +128,7 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		{ "threads", required_argument, NULL, 'j' },
 		{ "diff", required_argument, NULL, OPT_DIFF },
 		{ "json", no_argument, NULL, OPT_JSON },
+		{ "no-camera-fit", no_argument, NULL, OPT_NO_FIT },
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};
@@ -122,6 +138,8 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		{ "output", required_argument, NULL, 'o' },
 		{ "csv", required_argument, NULL, OPT_CSV },
 		{ "scene", required_argument, NULL, OPT_SCENE },
+		{ "marks", required_argument, NULL, OPT_MARKS },
+		{ "no-camera-fit", no_argument, NULL, OPT_NO_FIT },
 		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 },
 	};

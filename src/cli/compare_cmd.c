@@ -72,21 +72,53 @@ static void json_psnr(double psnr)
 		printf("%.3f", psnr);
 }
 
+/* The best explanation's causes as a JSON array: "camera" first when the
+ * camera moved, then the first cause's id or ids. */
+static void compare_json_best(const struct check_reference *ref, const struct check_result *res)
+{
+	const struct grade_rank *r = res->n_ranks > 0 ? &res->ranks[0] : NULL;
+	bool any = false;
+	char id[96];
+	double psnr = res->moved ? res->fig_found.psnr : res->fig.psnr;
+
+	printf(", \"best\": {\"causes\": [");
+	if (res->moved) {
+		printf("\"camera\"");
+		any = true;
+	}
+	if (res->verdict == CHECK_DIFFERS && r && res->explained != CHECK_NONE) {
+		check_cause_id(ref, r, id, sizeof(id));
+		printf("%s\"%s\"", any ? ", " : "", grade_cause_text(r->cause, ref->base.settings.clamp)->id);
+		if (r->also != RT_CAUSE_NONE)
+			printf(", \"%s\"", grade_cause_text(r->also, ref->base.settings.clamp)->id);
+		psnr = r->fig.psnr;
+	}
+	printf("], \"psnr\": ");
+	json_psnr(res->verdict == CHECK_MATCH ? (res->moved ? res->fig_found.psnr : res->fig.psnr) : psnr);
+	printf(", \"explains\": %s}",
+	       res->verdict == CHECK_MATCH || res->explained == CHECK_EXPLAINED ? "true" : "false");
+}
+
 static void compare_json(const struct check_options *o, const struct check_reference *ref,
 			 const struct check_result *res, const char *diagnosis)
 {
+	const struct check_view *v = check_result_view(ref, res);
+	char buf[600];
 	size_t k;
 
 	printf("{\"scene\": ");
 	json_string(o->scene.path ? o->scene.path : "test-scene");
 	printf(", \"image\": ");
 	json_string(o->images[0]);
-	printf(", \"width\": %d, \"height\": %d", ref->image.width, ref->image.height);
+	printf(", \"width\": %d, \"height\": %d", res->image.width, res->image.height);
+	printf(", \"size_note\": ");
+	json_string(res->size_note);
 	printf(", \"psnr\": ");
 	json_psnr(res->fig.psnr);
 	printf(", \"psnr_gate\": ");
 	json_psnr(res->fig.psnr_gate);
 	printf(", \"left_out\": %ld", res->fig.left_out);
+	printf(", \"ties\": %ld", v->n_ties);
 	printf(", \"conversion\": \"%s\"", res->truncated ? "truncate" : "round");
 	printf(", \"psnr_rounded\": ");
 	json_psnr(res->fig_rounded.psnr);
@@ -102,27 +134,57 @@ static void compare_json(const struct check_options *o, const struct check_refer
 	       res->explained == CHECK_CLOSE ? "close" : "none");
 	printf(", \"diagnosis\": ");
 	json_string(diagnosis);
+	check_camera_options(&v->params, buf, sizeof(buf));
+	printf(", \"camera\": {\"moved\": %s, \"fitted\": %s, \"options\": ", res->moved ? "true" : "false",
+	       res->fitted ? "true" : "false");
+	json_string(buf);
+	printf(", \"psnr\": ");
+	json_psnr(res->moved ? res->fig_found.psnr : res->fig.psnr);
+	printf(", \"psnr_given\": ");
+	json_psnr(res->fig.psnr);
+	printf(", \"candidates\": %ld}", res->fit_evals);
+	compare_json_best(ref, res);
+	printf(", \"objects\": [");
+	for (k = 0; k < res->n_objects; k++) {
+		const struct grade_object *ob = &res->objects[k];
+		printf("%s{\"index\": ", k ? ", " : "");
+		if (ob->index > 0)
+			printf("%ld", ob->index);
+		else
+			printf("null");
+		printf(", \"keyword\": \"%s\", \"pixels\": %ld, \"off2\": %.6f, \"psnr\": ", ob->keyword,
+		       ob->pixels, ob->off2);
+		json_psnr(ob->psnr);
+		printf("}");
+	}
+	printf("]");
+	check_objects_line(res, buf, sizeof(buf));
+	printf(", \"objects_line\": ");
+	json_string(buf);
 	/* The first cause, or all those ranked first equally: none preferred. */
 	printf(", \"first\": [");
-	for (k = 0; k < res->n_ranks && (k == 0 || res->ranks[k].first_equal); k++)
-		printf("%s\"%s\"", k ? ", " : "",
-		       grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp)->id);
+	for (k = 0; k < res->n_ranks && (k == 0 || res->ranks[k].first_equal); k++) {
+		check_cause_id(ref, &res->ranks[k], buf, sizeof(buf));
+		printf("%s\"%s\"", k ? ", " : "", buf);
+	}
 	printf("]");
 	printf(", \"causes\": [");
 	for (k = 0; k < res->n_ranks; k++) {
-		const struct grade_cause_text *t = grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp);
-		printf("%s{\"id\": \"%s\", \"with\": ", k ? ", " : "", t->id);
-		json_string(t->with);
+		const struct grade_rank *r = &res->ranks[k];
+		check_cause_id(ref, r, buf, sizeof(buf));
+		printf("%s{\"id\": \"%s\", \"with\": ", k ? ", " : "", buf);
+		check_cause_words(ref, res, r, buf, sizeof(buf));
+		json_string(buf);
 		printf(", \"fix\": ");
-		json_string(t->fix);
+		check_cause_fix(ref, r, buf, sizeof(buf));
+		json_string(buf);
 		printf(", \"psnr\": ");
-		json_psnr(res->ranks[k].fig.psnr);
-		printf(", \"off2\": %.6f, \"estimated\": %s, \"explains\": %s", res->ranks[k].fig.off2,
-		       res->ranks[k].estimated ? "true" : "false",
-		       res->ranks[k].fig.match ? "true" : "false");
-		printf(", \"first_equal\": %s, \"truncated\": %s}",
-		       res->ranks[k].first_equal ? "true" : "false",
-		       res->ranks[k].truncated ? "true" : "false");
+		json_psnr(r->fig.psnr);
+		printf(", \"off2\": %.6f, \"estimated\": %s, \"explains\": %s", r->fig.off2,
+		       r->estimated ? "true" : "false", r->fig.match ? "true" : "false");
+		printf(", \"first_equal\": %s, \"truncated\": %s, \"pair\": %s}",
+		       r->first_equal ? "true" : "false", r->truncated ? "true" : "false",
+		       r->also != RT_CAUSE_NONE ? "true" : "false");
 	}
 	printf("]}\n");
 }
@@ -138,13 +200,18 @@ static void print_psnr(double psnr)
 static void compare_text(const struct check_options *o, const struct check_reference *ref,
 			 const struct check_result *res, const char *diagnosis)
 {
+	const struct check_view *v = check_result_view(ref, res);
+	char buf[600];
 	size_t k;
+	bool estimated = false;
 
 	printf("%s against the reference of %s (%dx%d)\n", o->images[0],
-	       o->scene.path ? o->scene.path : "the test scene", ref->image.width, ref->image.height);
+	       o->scene.path ? o->scene.path : "the test scene", res->image.width, res->image.height);
+	if (res->size_note[0])
+		printf("  note: %s\n", res->size_note);
 	printf("  PSNR          ");
 	print_psnr(res->fig.psnr);
-	printf("    (every pixel)\n");
+	printf("    (every pixel but the ties)\n");
 	printf("  PSNR of gate  ");
 	print_psnr(res->fig.psnr_gate);
 	printf("    gate >= %g dB, the worst %ld pixel%s (<= 0.02 %%) left out\n", RT_GRADE_MIN_PSNR,
@@ -153,27 +220,47 @@ static void compare_text(const struct check_options *o, const struct check_refer
 	printf("  off by > 2    %8.3f %%       gate <= %g %%\n", 100.0 * res->fig.off2, 100.0 * RT_GRADE_MAX_OFF2);
 	printf("  off by > 8    %8.3f %%       gate <= %g %%\n", 100.0 * res->fig.off8, 100.0 * RT_GRADE_MAX_OFF8);
 	printf("  off by > 32   %8.3f %%\n", 100.0 * res->fig.off32);
-	printf("verdict: %s\n", res->verdict == CHECK_MATCH ? "MATCH" : "DIFFERS");
+	printf("  ties          %8ld px      left out: either colour is right there (a ray on a "
+	       "cell's edge, a grazing shadow)\n", ref->view.n_ties);
+	if (res->moved) {
+		check_camera_options(&res->found.params, buf, sizeof(buf));
+		printf("camera: yours differs; found %s\n", buf);
+		printf("  PSNR there    ");
+		print_psnr(res->fig_found.psnr);
+		printf("    (%.2f dB at the camera given; %ld ties there)\n", res->fig.psnr,
+		       res->found.n_ties);
+	}
+	printf("verdict: %s\n", res->verdict == CHECK_MATCH
+		       ? (res->moved ? "MATCH at the camera found" : "MATCH") : "DIFFERS");
+	check_objects_line(res, buf, sizeof(buf));
+	if (buf[0] && res->verdict == CHECK_DIFFERS)
+		printf("objects: %s\n", buf);
 	if (res->verdict == CHECK_MATCH) {
-		if (res->truncated && !res->fig_rounded.match)
+		if ((res->truncated && !res->fig_rounded.match) || res->moved)
 			printf("%s\n", diagnosis);
 		return;
 	}
 	if (res->n_ranks > 0) {
-		printf("likely causes, best first (PSNR of that mistake's image against %s):\n", o->images[0]);
+		printf("likely causes, best first (PSNR of that mistake's image against %s%s):\n",
+		       o->images[0], res->moved ? ", at the camera found" : "");
 		for (k = 0; k < res->n_ranks && k < COMPARE_LISTED; k++) {
-			const struct grade_cause_text *t =
-				grade_cause_text(res->ranks[k].cause, ref->job.settings.clamp);
+			const struct grade_rank *r = &res->ranks[k];
 			size_t rank = k + 1;
 			while (rank > 1 && res->ranks[rank - 1].first_equal && res->ranks[0].first_equal)
 				rank--;
-			printf("  %zu%s %-48s %s", rank, res->ranks[k].first_equal ? "=" : ".", t->with,
-			       res->ranks[k].estimated ? "~" : " ");
-			print_psnr(res->ranks[k].fig.psnr);
-			printf("%s\n", res->ranks[k].fig.match ? "  explains the image" : "");
-			printf("     fix: %s\n", t->fix);
+			check_cause_words(ref, res, r, buf, sizeof(buf));
+			printf("  %zu%s %-48s %s", rank, r->first_equal ? "=" : ".", buf,
+			       r->estimated ? "~" : " ");
+			estimated = estimated || r->estimated;
+			print_psnr(r->fig.psnr);
+			printf("%s\n", r->fig.match ? "  explains the image" : "");
+			check_cause_fix(ref, r, buf, sizeof(buf));
+			printf("     fix: %s\n", buf);
 		}
+		if (estimated)
+			printf("  (~: estimated from a sample of the pixels; the likeliest are rendered in full)\n");
 	}
+	(void)v;
 	printf("%s\n", diagnosis);
 }
 
@@ -205,7 +292,7 @@ int compare_main(int argc, char **argv)
 	}
 	if (o.diff_path) {
 		struct image diff = { 0, 0, NULL };
-		rc = grade_diff_image(&ref.image, &res.image, &diff, &d);
+		rc = check_diff_picture(&ref, &res, &diff, &d);
 		if (rc == 0)
 			rc = image_write(&diff, o.diff_path, image_format_from_path(o.diff_path),
 					 &cli_cancelled, &d);

@@ -66,7 +66,7 @@ static int grade_fill_csv(void *ctx, FILE *f, struct diag *d)
 			fputc(',', f);
 			for (k = 0; k < r->n_ranks && (k == 0 || r->ranks[k].first_equal); k++)
 				fprintf(f, "%s%s", k ? " or " : "",
-					grade_cause_text(r->ranks[k].cause, c->ref->job.settings.clamp)->id);
+					grade_cause_text(r->ranks[k].cause, c->ref->base.settings.clamp)->id);
 			if (isinf(r->ranks[0].fig.psnr))
 				fprintf(f, ",inf");
 			else

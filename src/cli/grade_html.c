@@ -111,14 +111,14 @@ static int html_submission(FILE *f, const struct html_ctx *c, int i, struct diag
 	if (r->verdict == CHECK_UNREADABLE)
 		return fputs("</section>\n", f) < 0 ? diag_fail(d, RT_E_IO, "cannot write the report") : 0;
 	fputs("<div class=\"images\"><figure><img class=\"reference\" alt=\"reference\" src=\"", f);
-	if ((rc = html_image_uri(f, &c->ref->image, d)) < 0)
+	if ((rc = html_image_uri(f, &c->ref->view.image, d)) < 0)
 		return rc;
 	fputs("\"><figcaption>reference</figcaption></figure>\n"
 	      "<figure><img class=\"submitted\" alt=\"submission\" src=\"", f);
 	if ((rc = html_image_uri(f, &r->image, d)) < 0)
 		return rc;
 	fputs("\"><figcaption>submission</figcaption></figure>\n", f);
-	if ((rc = grade_diff_image(&c->ref->image, &r->image, &diff, d)) < 0)
+	if ((rc = grade_diff_image(&c->ref->view.image, &r->image, &diff, d)) < 0)
 		return rc;
 	fputs("<figure><img class=\"difference\" alt=\"difference\" src=\"", f);
 	rc = html_image_uri(f, &diff, d);
@@ -142,7 +142,7 @@ static int html_submission(FILE *f, const struct html_ctx *c, int i, struct diag
 		      "<th>fix</th></tr>\n", f);
 		for (k = 0; k < r->n_ranks && k < 5; k++) {
 			const struct grade_cause_text *t = grade_cause_text(r->ranks[k].cause,
-									     c->ref->job.settings.clamp);
+									     c->ref->base.settings.clamp);
 			fprintf(f, "<tr data-cause=\"%s\"><td>", t->id);
 			html_text(f, t->with);
 			fputs("</td><td>", f);
@@ -177,8 +177,8 @@ static int html_fill(void *ctx, FILE *f, struct diag *d)
 	fprintf(f, "</h1>\n<p>Reference %dx%d, recursion level %d, clamping %s. The gate: PSNR "
 		   "&ge; %g dB, at most %g %% of pixels off by more than 2 levels and %g %% by more "
 		   "than 8. <span id=\"tally\">%d of %d images match.</span></p>\n",
-		c->ref->image.width, c->ref->image.height, c->ref->job.settings.recursion,
-		c->ref->job.settings.clamp == RT_CLAMP_LEVEL ? "at every level" : "at the end",
+		c->ref->view.image.width, c->ref->view.image.height, c->ref->base.settings.recursion,
+		c->ref->base.settings.clamp == RT_CLAMP_LEVEL ? "at every level" : "at the end",
 		RT_GRADE_MIN_PSNR, 100.0 * RT_GRADE_MAX_OFF2, 100.0 * RT_GRADE_MAX_OFF8, matches,
 		c->o->n_images);
 	fputs("<table id=\"summary\"><thead><tr><th>#</th><th>file</th><th>verdict</th><th>PSNR</th>"
@@ -189,7 +189,7 @@ static int html_fill(void *ctx, FILE *f, struct diag *d)
 		fprintf(f, "<tr class=\"row %s\" data-verdict=\"%s\" data-cause=\"%s\"><td>%d</td>"
 			   "<td><a href=\"#sub%d\">", html_verdict(r->verdict), html_verdict(r->verdict),
 			r->verdict == CHECK_DIFFERS && r->n_ranks > 0
-				? grade_cause_text(r->ranks[0].cause, c->ref->job.settings.clamp)->id : "",
+				? grade_cause_text(r->ranks[0].cause, c->ref->base.settings.clamp)->id : "",
 			i + 1, i + 1);
 		html_text(f, c->o->images[i]);
 		fprintf(f, "</a></td><td class=\"verdict\">%s</td><td>", html_verdict(r->verdict));

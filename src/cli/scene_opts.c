@@ -25,6 +25,9 @@ const char cli_scene_help[] =
 	"      --no-floor         leave the floor out\n"
 	"      --dialect auto|classic|spot|pyramid|nearfar  read SCENE as that dialect\n"
 	"                         of the course format (default auto: detected)\n"
+	"      --lenient          read SCENE as the course's count-driven programs do:\n"
+	"                         numbers after the last section that no count\n"
+	"                         describes are ignored with a note, not refused\n"
 	"      --clamp level|final  clamp colours at every reflection level (default)\n"
 	"                         or only the finished pixel, as POV-Ray does\n"
 	"      --samples N        antialiasing: an N x N grid of rays in each pixel,\n"
@@ -212,12 +215,15 @@ int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag 
 		o->quiet = true;
 		break;
 	case CLI_OPT_EYE:
+		o->camera_given = true;
 		rc = cli_parse_vec3("--eye", arg, &o->camera.eye, d);
 		break;
 	case CLI_OPT_LOOK:
+		o->camera_given = true;
 		rc = cli_parse_vec3("--look", arg, &o->camera.look, d);
 		break;
 	case CLI_OPT_UP:
+		o->camera_given = true;
 		rc = cli_parse_vec3("--up", arg, &o->camera.up, d);
 		break;
 	case CLI_OPT_FOV:
@@ -264,6 +270,9 @@ int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag 
 		break;
 	case CLI_OPT_TEST_SCENE:
 		o->test_scene = true;
+		break;
+	case CLI_OPT_LENIENT:
+		o->read.lenient = true;
 		break;
 	case CLI_OPT_PLUGIN:
 		if (arg[0] == '\0')

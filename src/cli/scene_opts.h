@@ -30,6 +30,7 @@ enum cli_option {
 	CLI_OPT_FLOOR_TEXTURE,
 	CLI_OPT_GLASS,
 	CLI_OPT_PLUGIN,
+	CLI_OPT_LENIENT,
 	CLI_OPT_FIRST_PRIVATE,	/* each tool numbers its own options from here */
 };
 
@@ -50,7 +51,8 @@ enum cli_option {
 	{ "samples", required_argument, NULL, CLI_OPT_SAMPLES }, \
 	{ "floor-texture", required_argument, NULL, CLI_OPT_FLOOR_TEXTURE }, \
 	{ "glass", required_argument, NULL, CLI_OPT_GLASS }, \
-	{ "plugin", required_argument, NULL, CLI_OPT_PLUGIN }
+	{ "plugin", required_argument, NULL, CLI_OPT_PLUGIN }, \
+	{ "lenient", no_argument, NULL, CLI_OPT_LENIENT }
 
 #define CLI_MAX_GLASS 64
 #define CLI_GLASS_IOR 1.5	/* --glass's default index of refraction (crown glass) */
@@ -69,6 +71,7 @@ struct cli_scene {
 	int recursion;			/* 0: the file's */
 	struct camera_params camera;
 	bool fov_given;			/* --fov: else the file's dialect decides */
+	bool camera_given;		/* --eye, --look or --up */
 	double floor_width, floor_tile;	/* width INFINITY: nearfar's checkerboard */
 	struct material floor_mat;
 	bool floor_given;		/* --floor: a classic floor of that size */

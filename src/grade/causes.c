@@ -1,7 +1,12 @@
 /* The causes: their texts, and how each renders (the rules broken, the
- * settings changed, the pixel's corner), in each of its common forms. */
+ * settings changed, another floor, the pixel's corner, the colour's
+ * curve, the pixel's place), in each of its common forms. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
 #include "grade/grade_impl.h"
-#include "render/shade_rules.h"
+#include "scene/scene_impl.h"
 
 static const struct grade_cause_text grade_texts[RT_CAUSE_COUNT] = {
 	[RT_CAUSE_MIRRORED] = { "mirrored", "the image mirrored left-right",
@@ -41,6 +46,24 @@ static const struct grade_cause_text grade_texts[RT_CAUSE_COUNT] = {
 		"epsilon (1e-6), not the handout's * 1" },
 	[RT_CAUSE_FLOOR_SWAPPED] = { "floor-swapped", "the floor's tiles swapped",
 		"tile (i, j) is white when i + j is even: i = floor((x + 500) / tile width)" },
+	[RT_CAUSE_NO_REFLECTIONS] = { "no-reflections", "no reflections (recursion level 1)",
+		"add kr I(P + eps R, R) for each hit while level < the file's recursion level (its "
+		"first number; a primary ray is level 1)" },
+	[RT_CAUSE_RECURSION_LEVEL] = { "recursion-level", "another recursion level",
+		"read the recursion level from the file (its first number) and trace reflections "
+		"while level < it, the primary ray at level 1" },
+	[RT_CAUSE_FLOOR_HORIZON] = { "floor-horizon", "the floor reaching the horizon",
+		"the floor is a square of the file's width centred on the origin (|x|, |y| < "
+		"width / 2): a ray that meets z = 0 outside it hits no floor" },
+	[RT_CAUSE_FLOOR_SIZE] = { "floor-size", "the floor of another width",
+		"make the floor the dialect's width (1000; --floor WIDTH,TILE when the assignment "
+		"says otherwise)" },
+	[RT_CAUSE_FLOOR_CELL] = { "floor-cell", "the checker's cells of another size",
+		"make the cells the dialect's width (20 classic and spot, 30 pyramid, the header's "
+		"CELL in nearfar)" },
+	[RT_CAUSE_CHECKER_PHASE] = { "checker-phase", "the checker's cells counted from another origin",
+		"count the cells from the floor's corner: i = floor((x + width / 2) / cell), j "
+		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" },
 };
 
 static const struct grade_cause_text grade_clamp_level_text = {
@@ -57,21 +80,101 @@ const struct grade_cause_text *grade_cause_text(enum grade_cause c, enum clamp_m
 
 bool grade_cause_is_transform(enum grade_cause c)
 {
-	return c <= RT_CAUSE_GAMMA;
+	return c <= RT_CAUSE_RED_BLUE;
 }
 
-int grade_variant_count(enum grade_cause c)
+unsigned grade_cause_map(enum grade_cause c)
 {
-	/* Rays through each of the four corners; the light behind adding its
-	 * highlight only, or its diffuse term too (two-sided, |N.L|), or its
-	 * diffuse term signed (no test at all: kd N.L darkens), the commonest. */
-	return c == RT_CAUSE_PIXEL_CORNERS ? 4 : c == RT_CAUSE_LIGHT_BEHIND ? 3 : 1;
+	return c == RT_CAUSE_MIRRORED ? GRADE_MAP_MIRROR : c == RT_CAUSE_UPSIDE_DOWN ? GRADE_MAP_FLIP
+		: c == RT_CAUSE_TRANSPOSED ? GRADE_MAP_TRANSPOSE : c == RT_CAUSE_RED_BLUE
+		? GRADE_MAP_RED_BLUE : 0u;
 }
 
-void grade_variant_of(const struct grade_job *job, int id, struct grade_variant *v)
+/* The other recursion levels tried (RT_CAUSE_RECURSION_LEVEL's forms):
+ * two and three more, then two fewer, three fewer, ... down to 2 (one
+ * more, one fewer and 1 are causes of their own). */
+static int grade_other_level(int recursion, int form)
 {
-	enum grade_cause c = (enum grade_cause)(id / GRADE_VARIANTS);
-	int variant = id % GRADE_VARIANTS;
+	int level;
+
+	if (form < 2)
+		return recursion + 2 + form <= RT_MAX_RECURSION ? recursion + 2 + form : 0;
+	level = recursion - 2 - (form - 2);
+	return level >= 2 ? level : 0;
+}
+
+/* The floor the scene has: its half width (INFINITY for nearfar's) and
+ * cell; false when there is none. */
+static bool grade_scene_floor(const struct grade_job *job, double *half, double *cell)
+{
+	const struct scene_view *v = scene_view_of(job->scene);
+
+	if (!job->scene->floor)
+		return false;
+	*half = v->floor_width == INFINITY ? INFINITY : 0.5 * v->floor_width;
+	*cell = v->floor_cell;
+	return true;
+}
+
+static const double grade_width_factors[] = { 0.5, 2.0, 3.0, 5.0 };
+static const double grade_cells[] = { 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0 };
+
+/* The other floor of a floor cause's form; false for no such form. */
+static bool grade_floor_form(const struct grade_job *job, enum grade_cause c, int form,
+			     struct shade_floor *fl)
+{
+	double half, cell;
+
+	if (!grade_scene_floor(job, &half, &cell))
+		return false;
+	fl->half = half;
+	fl->cell = cell;
+	/* The contract's cells: from the corner of a finite floor, from the
+	 * origin of an endless one. */
+	fl->ox = fl->oy = half == INFINITY ? 0.0 : -half;
+	switch (c) {
+	case RT_CAUSE_FLOOR_HORIZON:
+		if (form > 0 || half == INFINITY)
+			return false;
+		fl->half = INFINITY;
+		return true;
+	case RT_CAUSE_FLOOR_SIZE:
+		if (half == INFINITY || form >= (int)(sizeof(grade_width_factors) / sizeof(double)))
+			return false;
+		fl->half = half * grade_width_factors[form];
+		fl->ox = fl->oy = -fl->half;
+		return true;
+	case RT_CAUSE_FLOOR_CELL:
+		if (form >= (int)(sizeof(grade_cells) / sizeof(double)) || grade_cells[form] == cell)
+			return false;
+		fl->cell = grade_cells[form];
+		return true;
+	case RT_CAUSE_CHECKER_PHASE:
+		if (form == 0 && half != INFINITY)
+			fl->ox = fl->oy = 0.0;
+		else if (form == 1)
+			fl->ox = fl->oy = 0.5 * cell;
+		else if (form == 2 && half != INFINITY)
+			fl->ox = fl->oy = -half + 0.5 * cell;
+		else
+			return false;
+		/* The same cells, when the corner is a whole number of pairs of
+		 * cells from the origin, change nothing. */
+		return fmod(fabs(fl->ox - (half == INFINITY ? 0.0 : -half)), 2.0 * cell) != 0.0;
+	default:
+		return false;
+	}
+}
+
+void grade_variant_plain(const struct grade_job *job, struct grade_variant *v)
+{
+	memset(v, 0, sizeof(*v));
+	v->settings = job->settings;
+}
+
+bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
+		      struct grade_variant *v)
+{
 	static const unsigned rule_of[RT_CAUSE_COUNT] = {
 		[RT_CAUSE_WHITE_SPECULAR] = RT_RULE_WHITE_SPECULAR,
 		[RT_CAUSE_NO_SHADOWS] = RT_RULE_NO_SHADOWS,
@@ -79,47 +182,144 @@ void grade_variant_of(const struct grade_job *job, int id, struct grade_variant 
 		[RT_CAUSE_UNIT_STARTS] = RT_RULE_UNIT_STARTS,
 		[RT_CAUSE_FLOOR_SWAPPED] = RT_RULE_FLOOR_SWAPPED,
 	};
-	v->settings = job->settings;
-	v->corner = false;
-	v->wrap = false;
-	if (id == GRADE_PLAIN_RENDER) {
-		v->rules = 0;
-		v->use_rules = false;
-		return;
-	}
+	const int recursion = job->settings.recursion;
+
+	grade_variant_plain(job, v);
+	if (form < 0 || form >= GRADE_VARIANTS)
+		return false;
 	v->rules = rule_of[c];
 	v->use_rules = v->rules != 0;
-	if (c == RT_CAUSE_RECURSION_FEWER)
-		v->settings.recursion--;
-	else if (c == RT_CAUSE_RECURSION_MORE)
-		v->settings.recursion++;
-	else if (c == RT_CAUSE_CLAMP_OTHER)
+	switch (c) {
+	case RT_CAUSE_MIRRORED:
+	case RT_CAUSE_UPSIDE_DOWN:
+	case RT_CAUSE_RED_BLUE:
+		v->map = grade_cause_map(c);
+		return form == 0;
+	case RT_CAUSE_TRANSPOSED:
+		v->map = GRADE_MAP_TRANSPOSE;
+		return form == 0 && job->camera->width == job->camera->height && job->camera->width > 1;
+	case RT_CAUSE_GAMMA:
+		/* The curve on the linear colour, before either conversion:
+		 * (unsigned char)(255 pow(c, 1 / 2.2)) truncates the encoded
+		 * value, not the reference's byte. */
+		v->gamma = form + 1;
+		return form < 2;
+	case RT_CAUSE_LIGHT_BEHIND:
+		/* Its highlight only; its diffuse term too (two-sided, |N.L|);
+		 * its diffuse term signed (no test at all: kd N.L darkens). */
+		v->rules |= form == 1 ? RT_RULE_TWO_SIDED : form == 2 ? RT_RULE_SIGNED_DIFFUSE : 0u;
+		return form < 3;
+	case RT_CAUSE_RECURSION_FEWER:
+		v->settings.recursion = recursion - 1;
+		return form == 0 && recursion >= 2;
+	case RT_CAUSE_RECURSION_MORE:
+		v->settings.recursion = recursion + 1;
+		return form == 0 && recursion < RT_MAX_RECURSION;
+	case RT_CAUSE_NO_REFLECTIONS:
+		v->settings.recursion = 1;
+		return form == 0 && recursion >= 3;
+	case RT_CAUSE_RECURSION_LEVEL:
+		v->settings.recursion = grade_other_level(recursion, form);
+		return v->settings.recursion > 0;
+	case RT_CAUSE_CLAMP_OTHER:
 		v->settings.clamp = job->settings.clamp == RT_CLAMP_LEVEL ? RT_CLAMP_FINAL : RT_CLAMP_LEVEL;
-	else if (c == RT_CAUSE_NEVER_CLAMP) {
+		return form == 0;
+	case RT_CAUSE_NEVER_CLAMP:
 		/* No clamping at any level (render_trace with --clamp final
 		 * leaves the colour as it is) and bytes that wrap, made in the
 		 * conversion so that one trace gives both the rounded and the
 		 * truncated byte; RT_RULE_NEVER_CLAMP is the rounded one alone. */
 		v->settings.clamp = RT_CLAMP_FINAL;
 		v->wrap = true;
-	}
-	else if (c == RT_CAUSE_PIXEL_CORNERS) {
+		return form == 0;
+	case RT_CAUSE_PIXEL_CORNERS:
 		/* (i, j), the top-left corner, and the three others. */
 		v->corner = true;
-		v->cx = variant & 1 ? 1.0 : 0.0;
-		v->cy = variant & 2 ? 1.0 : 0.0;
-	} else if (c == RT_CAUSE_LIGHT_BEHIND && variant == 1) {
-		v->rules |= RT_RULE_TWO_SIDED;
-	} else if (c == RT_CAUSE_LIGHT_BEHIND && variant == 2) {
-		v->rules |= RT_RULE_SIGNED_DIFFUSE;
+		v->cx = form & 1 ? 1.0 : 0.0;
+		v->cy = form & 2 ? 1.0 : 0.0;
+		return form < 4;
+	case RT_CAUSE_FLOOR_HORIZON:
+	case RT_CAUSE_FLOOR_SIZE:
+	case RT_CAUSE_FLOOR_CELL:
+	case RT_CAUSE_CHECKER_PHASE:
+		v->use_rules = true;
+		v->other_floor = true;
+		return grade_floor_form(job, c, form, &v->floor);
+	default:
+		return form == 0;
 	}
 }
 
-bool grade_cause_applies(const struct grade_job *job, enum grade_cause c)
+bool grade_variant_combine(const struct grade_variant *a, const struct grade_variant *b,
+			   struct grade_variant *out)
 {
-	if (c == RT_CAUSE_RECURSION_FEWER)
-		return job->settings.recursion >= 2;
-	if (c == RT_CAUSE_TRANSPOSED)
-		return job->camera->size > 1;
+	const struct render_settings *base = &a->settings;
+
+	*out = *a;
+	if ((a->other_floor && b->other_floor) || (a->corner && b->corner) || (a->gamma && b->gamma) ||
+	    (a->wrap && b->wrap) || (a->map & b->map) || ((a->rules & b->rules) != 0))
+		return false;
+	out->rules |= b->rules;
+	out->use_rules = a->use_rules || b->use_rules;
+	out->map |= b->map;
+	out->gamma = a->gamma ? a->gamma : b->gamma;
+	out->wrap = a->wrap || b->wrap;
+	if (b->corner) {
+		out->corner = true;
+		out->cx = b->cx;
+		out->cy = b->cy;
+	}
+	if (b->other_floor) {
+		out->other_floor = true;
+		out->floor = b->floor;
+	}
+	/* b's settings where they are not the plain ones (the caller
+	 * combines only forms of one job). */
+	if (b->settings.recursion != base->recursion) {
+		out->settings.recursion = b->settings.recursion;
+	}
+	if (b->settings.clamp != base->clamp)
+		out->settings.clamp = b->settings.clamp;
 	return true;
+}
+
+void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int form, char *buf,
+			size_t size)
+{
+	struct grade_variant v;
+	double half = 0.0, cell = 0.0;
+
+	buf[0] = '\0';
+	if (!grade_variant_of(job, c, form, &v))
+		return;
+	grade_scene_floor(job, &half, &cell);
+	switch (c) {
+	case RT_CAUSE_GAMMA:
+		snprintf(buf, size, form == 0 ? "the sRGB curve" : "c^(1/2.2)");
+		break;
+	case RT_CAUSE_LIGHT_BEHIND:
+		snprintf(buf, size, form == 0 ? "its highlight" : form == 1 ? "lit from both sides"
+			 : "its diffuse term negative");
+		break;
+	case RT_CAUSE_RECURSION_LEVEL:
+		snprintf(buf, size, "recursion level %d instead of %d", v.settings.recursion,
+			 job->settings.recursion);
+		break;
+	case RT_CAUSE_PIXEL_CORNERS:
+		snprintf(buf, size, "the %s %s corners", form & 2 ? "bottom" : "top",
+			 form & 1 ? "right" : "left");
+		break;
+	case RT_CAUSE_FLOOR_SIZE:
+		snprintf(buf, size, "%g wide instead of %g", 2.0 * v.floor.half, 2.0 * half);
+		break;
+	case RT_CAUSE_FLOOR_CELL:
+		snprintf(buf, size, "cells %g wide instead of %g", v.floor.cell, cell);
+		break;
+	case RT_CAUSE_CHECKER_PHASE:
+		snprintf(buf, size, form == 0 ? "from the origin" : form == 1
+			 ? "from the origin, half a cell off" : "from the corner, half a cell off");
+		break;
+	default:
+		break;
+	}
 }

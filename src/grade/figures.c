@@ -50,8 +50,8 @@ static double grade_psnr_of(double sq, double n)
 	return sq == 0.0 ? INFINITY : 10.0 * log10(255.0 * 255.0 / sq);
 }
 
-void grade_figures_of(const struct image *a, const struct image *b, int stride, int ox, int oy,
-		      struct grade_figures *f)
+static void grade_figures_in(const struct image *a, const struct image *b, int stride, int ox,
+			     int oy, const uint8_t *skip, struct grade_figures *f)
 {
 	long n = 0, off2 = 0, off8 = 0, off32 = 0, n_worst = 0, cap, nx, ny, j;
 	double sum = 0.0, sq = 0.0, worst_sq = 0.0;
@@ -68,6 +68,8 @@ void grade_figures_of(const struct image *a, const struct image *b, int stride, 
 		const uint8_t *pb = b->pixels + (size_t)y * (size_t)b->width * 3;
 		for (x = ox % stride; x < a->width; x += stride) {
 			int worst = 0, q = 0;
+			if (skip && skip[(size_t)y * (size_t)a->width + (size_t)x])
+				continue;
 			for (k = 0; k < 3; k++) {
 				int dv = abs((int)pa[3 * x + k] - (int)pb[3 * x + k]);
 				sum += dv;
@@ -97,6 +99,18 @@ void grade_figures_of(const struct image *a, const struct image *b, int stride, 
 	f->off32 = (double)off32 / (double)n;
 	f->match = f->psnr_gate >= RT_GRADE_MIN_PSNR && f->off2 <= RT_GRADE_MAX_OFF2 &&
 		   f->off8 <= RT_GRADE_MAX_OFF8;
+}
+
+void grade_figures_of(const struct image *a, const struct image *b, int stride, int ox, int oy,
+		      struct grade_figures *f)
+{
+	grade_figures_in(a, b, stride, ox, oy, NULL, f);
+}
+
+void grade_figures_skipping(const struct image *a, const struct image *b, const uint8_t *skip,
+			    struct grade_figures *f)
+{
+	grade_figures_in(a, b, 1, 0, 0, skip, f);
 }
 
 int grade_diff_image(const struct image *ref, const struct image *sub, struct image *out,

@@ -1,13 +1,25 @@
-/* The grade module's parts: the transforms and the renders of the causes. */
+/* The grade module's parts: the causes' forms, the transforms and the
+ * renders of the causes. */
 #ifndef RT_GRADE_IMPL_H
 #define RT_GRADE_IMPL_H
 
 #include <stdint.h>
 
+#include "render/shade_rules.h"
 #include "whitted/grade.h"
 
+/* What a render's pixel (x, y) is taken from: the reference's pixel
+ * mirrored, flipped or transposed, and its red and blue swapped. */
+enum grade_map {
+	GRADE_MAP_MIRROR = 1u << 0,
+	GRADE_MAP_FLIP = 1u << 1,
+	GRADE_MAP_TRANSPOSE = 1u << 2,
+	GRADE_MAP_RED_BLUE = 1u << 3,
+};
+
 /* How a cause renders in one of its forms: broken rules, other settings,
- * or rays through a corner of the pixel. */
+ * another floor, rays through a corner of the pixel, and what becomes of
+ * the colour (gamma, bytes that wrap) and of the pixel's place (map). */
 struct grade_variant {
 	unsigned rules;
 	struct render_settings settings;
@@ -15,40 +27,42 @@ struct grade_variant {
 	bool corner;			/* rays through (x + cx, y + cy), not the centre */
 	bool wrap;			/* the bytes wrap round instead of saturating */
 	double cx, cy;
+	bool other_floor;		/* floor in place of the scene's */
+	struct shade_floor floor;
+	int gamma;			/* 0 none, 1 the sRGB curve, 2 c^(1/2.2) */
+	unsigned map;			/* enum grade_map */
 };
 
-/* A cause's renders: the ways a program commonly makes that mistake, of
- * which the one nearest the submission counts.  A render is named by an id
- * cause * GRADE_VARIANTS + variant. */
-#define GRADE_VARIANTS 4
-#define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * GRADE_VARIANTS)
-/* The id of the render with no rule broken: the reference's own pixels. */
-#define GRADE_PLAIN_RENDER (-1)
+/* The most forms a cause has. */
+#define GRADE_VARIANTS 8
+#define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * GRADE_VARIANTS + GRADE_MAX_PAIRS)
 
-/* The number of forms of cause c (1 to GRADE_VARIANTS). */
-int grade_variant_count(enum grade_cause c);
-/* The render named by id. */
-void grade_variant_of(const struct grade_job *job, int id, struct grade_variant *v);
-/* Whether cause c can change the job's image at all. */
-bool grade_cause_applies(const struct grade_job *job, enum grade_cause c);
+/* The render of form `form` of cause c into v; false when the cause has
+ * no such form for this job (or the form would not change the image). */
+bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
+		      struct grade_variant *v);
+/* The render of the reference itself. */
+void grade_variant_plain(const struct grade_job *job, struct grade_variant *v);
+/* Both causes' forms at once in out; false when they cannot be
+ * combined (two recursion levels, two floors, ...). */
+bool grade_variant_combine(const struct grade_variant *a, const struct grade_variant *b,
+			   struct grade_variant *out);
 
 /* True for the causes that transform the reference (no render). */
 bool grade_cause_is_transform(enum grade_cause c);
+/* The map of a transform cause. */
+unsigned grade_cause_map(enum grade_cause c);
 
-/* The reference transformed as cause c says. */
-int grade_transform(const struct image *ref, enum grade_cause c, struct image *out, struct diag *d);
+/* The reference transformed as map says (enum grade_map). */
+int grade_transform_map(const struct image *ref, unsigned map, struct image *out, struct diag *d);
 
-/* Renders, for each of the n renders named by ids[i] (a cause times 4
- * plus its variant, see causes.c), the listed pixels (indices y * size +
- * x; NULL: every pixel) into imgs[i], which have the camera's size, and
- * when timgs is not NULL the same colours converted by truncation into
- * timgs[i] (one trace, both conversions); threads share chunks of the list
- * of every render. */
-int grade_render_causes(const struct grade_job *job, const int *ids, struct image *imgs,
-			struct image *timgs, size_t n, const uint32_t *pixels, size_t n_pixels,
-			struct diag *d);
-
-/* The reference gamma-encoded with the sRGB curve (srgb) or c^(1/2.2). */
-int grade_transform_gamma(const struct image *ref, bool srgb, struct image *out, struct diag *d);
+/* Renders, for each of the n variants, the listed pixels (indices y *
+ * width + x; NULL: every pixel) into imgs[i], which have the camera's
+ * size, and when timgs is not NULL the same colours converted by
+ * truncation into timgs[i] (one trace, both conversions); threads share
+ * chunks of the list of every render. */
+int grade_render_variants(const struct grade_job *job, const struct grade_variant *variants,
+			  struct image *imgs, struct image *timgs, size_t n,
+			  const uint32_t *pixels, size_t n_pixels, struct diag *d);
 
 #endif

@@ -18,16 +18,6 @@
 #define GRADE_FULL_MARGIN 3.0
 #define GRADE_SAMPLE_STRIDE 4
 
-/* Best first; equal PSNRs in the table's order. */
-static int grade_rank_cmp(const void *a, const void *b)
-{
-	const struct grade_rank *x = a, *y = b;
-
-	if (x->fig.psnr != y->fig.psnr)
-		return x->fig.psnr > y->fig.psnr ? -1 : 1;
-	return (int)x->cause - (int)y->cause;
-}
-
 /* The sample the renders are ranked on: every pixel where the submission
  * differs from the reference by more than 2 levels (or an even share of
  * them, at most GRADE_SAMPLE_DIFFERING), where the causes must be told
@@ -136,63 +126,32 @@ static bool grade_same_on(const struct grade_sample *smp, const struct image *im
 	return true;
 }
 
-/* The better of the two gamma curves against sub, applied to the rounded
- * reference or (tref not NULL) the truncated one. */
-static int grade_rank_gamma(const struct image *ref, const struct image *tref,
-			    const struct image *sub, struct grade_figures *f, bool *truncated,
-			    struct diag *d)
-{
-	struct grade_figures g;
-	struct image t;
-	int pass, rc;
-
-	*truncated = false;
-	for (pass = 0; pass < (tref ? 4 : 2); pass++) {
-		if ((rc = grade_transform_gamma(pass < 2 ? ref : tref, pass % 2 == 0, &t, d)) < 0)
-			return rc;
-		grade_figures_of(&t, sub, 1, 0, 0, pass == 0 ? f : &g);
-		image_free(&t);
-		if (pass > 0 && g.psnr > f->psnr) {
-			*f = g;
-			*truncated = pass >= 2;
-		}
-	}
-	return 0;
-}
-
-/* The figures of the cause's transform of ref (and of tref, the better
- * kept) against sub; *changes false when the transform leaves ref as it is. */
-static int grade_rank_transform(const struct image *ref, const struct image *tref,
-				const struct image *sub, enum grade_cause c,
-				struct grade_rank *out, bool *changes, struct diag *d)
+/* The figures of ref (and tref, the better kept) transformed by map,
+ * against sub; *changes false when the transform leaves ref as it is. */
+static int grade_rank_map(const struct image *ref, const struct image *tref,
+			  const struct image *sub, unsigned map, struct grade_figures *f,
+			  bool *truncated, bool *changes, struct diag *d)
 {
 	size_t total = (size_t)ref->width * (size_t)ref->height;
 	struct grade_figures g;
 	struct image t;
 	int rc;
 
-	if ((rc = grade_transform(ref, c, &t, d)) < 0)
+	*truncated = false;
+	if ((rc = grade_transform_map(ref, map, &t, d)) < 0)
 		return rc;
 	*changes = memcmp(t.pixels, ref->pixels, total * 3) != 0;
-	out->cause = c;
-	out->estimated = false;
-	out->truncated = false;
-	out->first_equal = false;
-	grade_figures_of(&t, sub, 1, 0, 0, &out->fig);
+	grade_figures_of(&t, sub, 1, 0, 0, f);
 	image_free(&t);
-	if (!*changes)
+	if (!*changes || !tref)
 		return 0;
-	if (c == RT_CAUSE_GAMMA)
-		return grade_rank_gamma(ref, tref, sub, &out->fig, &out->truncated, d);
-	if (!tref)
-		return 0;
-	if ((rc = grade_transform(tref, c, &t, d)) < 0)
+	if ((rc = grade_transform_map(tref, map, &t, d)) < 0)
 		return rc;
 	grade_figures_of(&t, sub, 1, 0, 0, &g);
 	image_free(&t);
-	if (g.psnr > out->fig.psnr) {
-		out->fig = g;
-		out->truncated = true;
+	if (g.psnr > f->psnr) {
+		*f = g;
+		*truncated = true;
 	}
 	return 0;
 }
@@ -238,111 +197,316 @@ static void grade_mark_first_equal(struct grade_rank *r, size_t n)
 	}
 }
 
+/* A render to make: a cause (or pair) in one form. */
+struct grade_todo {
+	struct grade_rank rank;
+	struct grade_variant v;
+};
+
+/* The renders of the causes: the work of grade_rank_causes, whose
+ * images are freed together. */
+struct grade_ranking {
+	const struct grade_job *job;
+	const struct image *ref, *tref, *sub;
+	struct grade_sample smp;
+	bool exact;			/* small: every pixel, no sample */
+	struct grade_todo *todo;
+	struct image *imgs, *timgs;
+	size_t n_todo, cap;
+};
+
+static int grade_todo_add(struct grade_ranking *g, const struct grade_rank *r,
+			  const struct grade_variant *v, struct diag *d)
+{
+	struct grade_todo *t;
+	int rc;
+
+	if (g->n_todo == g->cap)
+		return diag_fail(d, RT_E_INVALID, "too many renders");
+	t = &g->todo[g->n_todo];
+	t->rank = *r;
+	t->v = *v;
+	if ((rc = image_alloc(&g->imgs[g->n_todo], g->ref->width, g->ref->height, d)) < 0 ||
+	    (g->tref && (rc = image_alloc(&g->timgs[g->n_todo], g->ref->width, g->ref->height, d)) < 0))
+		return rc;
+	g->n_todo++;
+	return 0;
+}
+
+/* Renders the to-dos from first on (on the sample, or every pixel when
+ * full), and scores each; a render that equals the reference on what was
+ * rendered gets an infinitely bad score (it changes nothing). */
+static int grade_todo_run(struct grade_ranking *g, size_t first, bool full, struct diag *d)
+{
+	size_t total = (size_t)g->ref->width * (size_t)g->ref->height, k;
+	bool every = full || g->exact;
+	struct grade_variant v[GRADE_MAX_RENDERS];
+	int rc;
+
+	for (k = first; k < g->n_todo; k++)
+		v[k - first] = g->todo[k].v;
+	rc = grade_render_variants(g->job, v, g->imgs + first, g->tref ? g->timgs + first : NULL,
+				   g->n_todo - first, every ? NULL : g->smp.pixels,
+				   every ? 0 : g->smp.n, d);
+	if (rc < 0)
+		return rc;
+	for (k = first; k < g->n_todo; k++) {
+		struct grade_rank *r = &g->todo[k].rank;
+		if (every ? memcmp(g->imgs[k].pixels, g->ref->pixels, total * 3) == 0
+			  : grade_same_on(&g->smp, &g->imgs[k], g->ref)) {
+			r->fig.psnr = -INFINITY;
+			continue;
+		}
+		grade_better_of(every ? NULL : &g->smp, &g->imgs[k], g->tref ? &g->timgs[k] : NULL,
+				g->sub, &r->fig, &r->truncated);
+		r->estimated = !every;
+	}
+	return 0;
+}
+
+/* The best to-do of each cause (or pair) among [first, n_todo), into
+ * out (n of them, at most cap). */
+static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struct grade_rank *out,
+			      size_t *idx, size_t cap)
+{
+	size_t n = 0, k, j;
+
+	for (k = first; k < g->n_todo; k++) {
+		const struct grade_rank *r = &g->todo[k].rank;
+		if (r->fig.psnr == -INFINITY)
+			continue;
+		for (j = 0; j < n && !(out[j].cause == r->cause && out[j].also == r->also); j++)
+			;
+		if (j == n && n < cap) {
+			out[n] = *r;
+			idx[n++] = k;
+		} else if (j < n && r->fig.psnr > out[j].fig.psnr) {
+			out[j] = *r;
+			idx[j] = k;
+		}
+	}
+	return n;
+}
+
+/* Renders in full the best few of ranks r[0..n) (sorted) made from
+ * renders (index idx[k] of the to-dos), within GRADE_FULL_MARGIN dB of
+ * best; their figures become exact. */
+static int grade_full_renders(struct grade_ranking *g, struct grade_rank *r, const size_t *idx,
+			      size_t n, double best, struct diag *d)
+{
+	size_t first = g->n_todo, k, made = 0;
+	int rc;
+
+	if (g->exact)
+		return 0;
+	for (k = 0; k < n && made < GRADE_FULL_RENDERS; k++) {
+		if (!r[k].estimated || r[k].fig.psnr < best - GRADE_FULL_MARGIN)
+			continue;
+		if ((rc = grade_todo_add(g, &r[k], &g->todo[idx[k]].v, d)) < 0)
+			return rc;
+		made++;
+	}
+	if (made == 0)
+		return 0;
+	if ((rc = grade_todo_run(g, first, true, d)) < 0)
+		return rc;
+	for (k = first; k < g->n_todo; k++) {
+		size_t j;
+		for (j = 0; j < n; j++)
+			if (r[j].cause == g->todo[k].rank.cause && r[j].also == g->todo[k].rank.also)
+				r[j] = g->todo[k].rank;
+	}
+	return 0;
+}
+
+/* Best first; equal PSNRs in the table's order, a single cause before a
+ * pair. */
+static int grade_rank_cmp(const void *a, const void *b)
+{
+	const struct grade_rank *x = a, *y = b;
+
+	if (x->fig.psnr != y->fig.psnr)
+		return x->fig.psnr > y->fig.psnr ? -1 : 1;
+	if (x->cause != y->cause)
+		return (int)x->cause - (int)y->cause;
+	return (int)x->also - (int)y->also;
+}
+
+/* The compositions of two transforms students' images show: a half turn
+ * (the right vector and the up vector both wrong), and a flip or a
+ * mirror with red and blue swapped (BMP's row and byte orders). */
+static const enum grade_cause grade_transform_pairs[][2] = {
+	{ RT_CAUSE_MIRRORED, RT_CAUSE_UPSIDE_DOWN },
+	{ RT_CAUSE_UPSIDE_DOWN, RT_CAUSE_RED_BLUE },
+	{ RT_CAUSE_MIRRORED, RT_CAUSE_RED_BLUE },
+	{ RT_CAUSE_TRANSPOSED, RT_CAUSE_RED_BLUE },
+};
+
+/* The singles a pair is made of: the best GRADE_PAIR_FROM of them. */
+#define GRADE_PAIR_FROM 5
+/* A pair is listed only this much nearer than the better of its two
+ * causes alone: a second cause that changes nearly nothing is no pair. */
+#define GRADE_PAIR_GAIN 1.0
+
+static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, size_t *n,
+			    struct diag *d)
+{
+	struct grade_rank pairs[GRADE_MAX_PAIRS + GRADE_MAX_PAIRS];
+	size_t idx[2 * GRADE_MAX_PAIRS], first = g->n_todo, np, k, j, m = 0;
+	size_t from = *n < GRADE_PAIR_FROM ? *n : GRADE_PAIR_FROM;
+	int rc;
+
+	/* The transforms' compositions, exactly. */
+	for (k = 0; k < sizeof(grade_transform_pairs) / sizeof(grade_transform_pairs[0]); k++) {
+		enum grade_cause a = grade_transform_pairs[k][0], b = grade_transform_pairs[k][1];
+		struct grade_variant va, vb;
+		struct grade_rank r;
+		bool changes;
+		if (!grade_variant_of(g->job, a, 0, &va) || !grade_variant_of(g->job, b, 0, &vb))
+			continue;
+		memset(&r, 0, sizeof(r));
+		r.cause = a;
+		r.also = b;
+		if ((rc = grade_rank_map(g->ref, g->tref, g->sub, va.map | vb.map, &r.fig, &r.truncated,
+					 &changes, d)) < 0)
+			return rc;
+		if (changes && m < GRADE_MAX_PAIRS)
+			pairs[m++] = r;
+	}
+	/* Two of the likeliest singles at once, each pair in the forms each
+	 * cause came nearest in. */
+	for (k = 0; k < from; k++)
+		for (j = k + 1; j < from; j++) {
+			struct grade_variant va, vb, v;
+			struct grade_rank r;
+			const struct grade_rank *x = &out[k], *y = &out[j];
+			if (x->also != RT_CAUSE_NONE || y->also != RT_CAUSE_NONE)
+				continue;
+			if (x->cause > y->cause) {
+				const struct grade_rank *t = x;
+				x = y;
+				y = t;
+			}
+			if (!grade_variant_of(g->job, x->cause, x->form, &va) ||
+			    !grade_variant_of(g->job, y->cause, y->form, &vb) ||
+			    !grade_variant_combine(&va, &vb, &v))
+				continue;
+			if (va.map && vb.map)
+				continue;	/* two transforms: done exactly above */
+			memset(&r, 0, sizeof(r));
+			r.cause = x->cause;
+			r.form = x->form;
+			r.also = y->cause;
+			r.also_form = y->form;
+			if ((rc = grade_todo_add(g, &r, &v, d)) < 0)
+				return rc;
+		}
+	if ((rc = grade_todo_run(g, first, false, d)) < 0)
+		return rc;
+	np = grade_todo_best(g, first, pairs + m, idx + m, GRADE_MAX_PAIRS);
+	for (k = 0; k < m; k++)
+		idx[k] = 0;
+	qsort(pairs + m, np, sizeof(pairs[0]), grade_rank_cmp);
+	if (np > 0 && (rc = grade_full_renders(g, pairs + m, idx + m, np, pairs[m].fig.psnr, d)) < 0)
+		return rc;
+	np += m;
+	/* A pair counts when it beats each of its causes alone. */
+	for (k = 0; k < np && *n < GRADE_MAX_RANKS; k++) {
+		double alone = -INFINITY;
+		for (j = 0; j < *n; j++)
+			if (out[j].also == RT_CAUSE_NONE &&
+			    (out[j].cause == pairs[k].cause || out[j].cause == pairs[k].also))
+				alone = out[j].fig.psnr > alone ? out[j].fig.psnr : alone;
+		if (pairs[k].fig.psnr >= alone + GRADE_PAIR_GAIN)
+			out[(*n)++] = pairs[k];
+	}
+	return 0;
+}
+
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		      const struct image *tref, const struct image *sub,
-		      struct grade_rank out[RT_CAUSE_COUNT], size_t *n, struct diag *d)
+		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d)
 {
-	struct image imgs[GRADE_MAX_RENDERS], timgs[GRADE_MAX_RENDERS];
-	struct image fimgs[GRADE_FULL_RENDERS], ftimgs[GRADE_FULL_RENDERS];
-	int renders[GRADE_MAX_RENDERS], full[GRADE_FULL_RENDERS] = { 0 }, best_id[RT_CAUSE_COUNT];
-	struct grade_rank sampled[RT_CAUSE_COUNT];
-	struct grade_sample smp;
-	size_t n_renders = 0, n_full = 0, k, j, i = 0, total = (size_t)ref->width * (size_t)ref->height;
-	bool exact = total <= GRADE_SAMPLE_MIN_PIXELS;
-	int size = ref->width, rc = 0, v;
+	struct grade_ranking g;
+	struct grade_rank singles[RT_CAUSE_COUNT];
+	size_t idx[RT_CAUSE_COUNT], k, ns, total = (size_t)ref->width * (size_t)ref->height;
+	double best = -INFINITY;
+	int rc = 0, form;
 
 	*n = 0;
-	memset(imgs, 0, sizeof(imgs));
-	memset(timgs, 0, sizeof(timgs));
-	memset(fimgs, 0, sizeof(fimgs));
-	memset(ftimgs, 0, sizeof(ftimgs));
-	memset(best_id, 0, sizeof(best_id));
-	if ((rc = grade_sample_make(ref, sub, &smp, d)) < 0)
-		return rc;
+	memset(&g, 0, sizeof(g));
+	g.job = job;
+	g.ref = ref;
+	g.tref = tref;
+	g.sub = sub;
+	g.exact = total <= GRADE_SAMPLE_MIN_PIXELS;
+	g.cap = GRADE_MAX_RENDERS;
+	g.todo = rt_calloc(g.cap, sizeof(*g.todo));
+	g.imgs = rt_calloc(g.cap, sizeof(*g.imgs));
+	g.timgs = rt_calloc(g.cap, sizeof(*g.timgs));
+	if (!g.todo || !g.imgs || !g.timgs) {
+		rc = diag_fail(d, RT_E_NOMEM, "out of memory for the causes");
+		goto out;
+	}
+	if ((rc = grade_sample_make(ref, sub, &g.smp, d)) < 0)
+		goto out;
 	for (k = 0; k < RT_CAUSE_COUNT; k++) {
 		enum grade_cause c = (enum grade_cause)k;
-		bool changes;
-		if (!grade_cause_applies(job, c))
-			continue;
-		if (grade_cause_is_transform(c)) {
-			if ((rc = grade_rank_transform(ref, tref, sub, c, &out[*n], &changes, d)) < 0)
+		for (form = 0; form < GRADE_VARIANTS; form++) {
+			struct grade_variant v;
+			struct grade_rank r;
+			bool changes;
+			if (!grade_variant_of(job, c, form, &v))
+				continue;
+			memset(&r, 0, sizeof(r));
+			r.cause = c;
+			r.form = form;
+			r.also = RT_CAUSE_NONE;
+			if (grade_cause_is_transform(c)) {
+				if ((rc = grade_rank_map(ref, tref, sub, v.map, &r.fig, &r.truncated,
+							 &changes, d)) < 0)
+					goto out;
+				if (changes)
+					out[(*n)++] = r;
+				continue;
+			}
+			if ((rc = grade_todo_add(&g, &r, &v, d)) < 0)
 				goto out;
-			*n += changes;
-			continue;
-		}
-		for (v = 0; v < grade_variant_count(c); v++) {
-			if ((rc = image_alloc(&imgs[n_renders], size, size, d)) < 0 ||
-			    (tref && (rc = image_alloc(&timgs[n_renders], size, size, d)) < 0))
-				goto out;
-			renders[n_renders++] = (int)k * GRADE_VARIANTS + v;
 		}
 	}
-	rc = grade_render_causes(job, renders, imgs, tref ? timgs : NULL, n_renders,
-				 exact ? NULL : smp.pixels, exact ? 0 : smp.n, d);
-	if (rc < 0)
+	if ((rc = grade_todo_run(&g, 0, false, d)) < 0)
 		goto out;
-	/* Each cause once, by its variant nearest the submission. */
-	for (k = 0; k < n_renders; k++) {
-		enum grade_cause c = (enum grade_cause)(renders[k] / GRADE_VARIANTS);
-		struct grade_figures f;
-		bool truncated;
-		if (exact ? memcmp(imgs[k].pixels, ref->pixels, total * 3) == 0
-			  : grade_same_on(&smp, &imgs[k], ref))
-			continue;
-		grade_better_of(exact ? NULL : &smp, &imgs[k], tref ? &timgs[k] : NULL, sub, &f,
-				&truncated);
-		for (j = 0; j < i && sampled[j].cause != c; j++)
-			;
-		if (j == i) {
-			sampled[i].cause = c;
-			sampled[i].estimated = !exact;
-			sampled[i].fig = f;
-			sampled[i].truncated = truncated;
-			sampled[i].first_equal = false;
-			best_id[c] = renders[k];
-			i++;
-		} else if (f.psnr > sampled[j].fig.psnr) {
-			sampled[j].fig = f;
-			sampled[j].truncated = truncated;
-			best_id[c] = renders[k];
-		}
+	ns = grade_todo_best(&g, 0, singles, idx, RT_CAUSE_COUNT);
+	qsort(singles, ns, sizeof(singles[0]), grade_rank_cmp);
+	/* The sort moved them: find each one's to-do again. */
+	for (k = 0; k < ns; k++) {
+		size_t j;
+		for (j = 0; j < g.n_todo; j++)
+			if (g.todo[j].rank.cause == singles[k].cause &&
+			    g.todo[j].rank.form == singles[k].form)
+				break;
+		idx[k] = j;
 	}
-	qsort(sampled, i, sizeof(sampled[0]), grade_rank_cmp);
-	if (!exact) {
-		double best = i > 0 ? sampled[0].fig.psnr : -INFINITY;
-		for (k = 0; k < *n; k++)
-			best = out[k].fig.psnr > best ? out[k].fig.psnr : best;
-		while (n_full < i && n_full < GRADE_FULL_RENDERS &&
-		       sampled[n_full].fig.psnr >= best - GRADE_FULL_MARGIN)
-			n_full++;
-		for (k = 0; k < n_full; k++) {
-			full[k] = best_id[sampled[k].cause];
-			if ((rc = image_alloc(&fimgs[k], size, size, d)) < 0 ||
-			    (tref && (rc = image_alloc(&ftimgs[k], size, size, d)) < 0))
-				goto out;
-		}
-		if ((rc = grade_render_causes(job, full, fimgs, tref ? ftimgs : NULL, n_full, NULL, 0,
-					      d)) < 0)
-			goto out;
-		for (k = 0; k < n_full; k++) {
-			sampled[k].estimated = false;
-			grade_better_of(NULL, &fimgs[k], tref ? &ftimgs[k] : NULL, sub, &sampled[k].fig,
-					&sampled[k].truncated);
-		}
-	}
-	memcpy(out + *n, sampled, i * sizeof(sampled[0]));
-	*n += i;
+	for (k = 0; k < *n; k++)
+		best = out[k].fig.psnr > best ? out[k].fig.psnr : best;
+	best = ns > 0 && singles[0].fig.psnr > best ? singles[0].fig.psnr : best;
+	if ((rc = grade_full_renders(&g, singles, idx, ns, best, d)) < 0)
+		goto out;
+	memcpy(out + *n, singles, ns * sizeof(singles[0]));
+	*n += ns;
+	qsort(out, *n, sizeof(out[0]), grade_rank_cmp);
+	if (*n > 0 && !out[0].fig.match && (rc = grade_rank_pairs(&g, out, n, d)) < 0)
+		goto out;
 	qsort(out, *n, sizeof(out[0]), grade_rank_cmp);
 	grade_mark_first_equal(out, *n);
 out:
-	for (k = 0; k < GRADE_MAX_RENDERS; k++) {
-		image_free(&imgs[k]);
-		image_free(&timgs[k]);
+	for (k = 0; k < g.n_todo; k++) {
+		image_free(&g.imgs[k]);
+		image_free(&g.timgs[k]);
 	}
-	for (k = 0; k < GRADE_FULL_RENDERS; k++) {
-		image_free(&fimgs[k]);
-		image_free(&ftimgs[k]);
-	}
-	rt_free(smp.pixels);
+	rt_free(g.todo);
+	rt_free(g.imgs);
+	rt_free(g.timgs);
+	rt_free(g.smp.pixels);
 	return rc;
 }

@@ -42,7 +42,8 @@ static struct ray grade_corner_ray(const struct camera *c, int x, int y, double 
 static struct color grade_sample(const struct grade_work *w, const struct grade_variant *v,
 				 const struct ray *r)
 {
-	return v->use_rules ? shade_rules_trace(w->job->scene, &v->settings, v->rules, r, 1)
+	return v->use_rules ? shade_rules_trace_floor(w->job->scene, &v->settings, v->rules,
+						      v->other_floor ? &v->floor : NULL, r, 1)
 			    : render_trace(w->job->scene, &v->settings, r, 1, NULL);
 }
 
@@ -99,9 +100,23 @@ static uint8_t grade_wrap_channel(double c, bool truncate)
 	return (uint8_t)(b < 0.0 ? b + 256.0 : b);
 }
 
+/* A channel gamma-encoded: the sRGB curve (curve 1) or c^(1/2.2). */
+static double grade_gamma(double c, int curve)
+{
+	c = c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
+	if (curve == 1)
+		return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+	return pow(c, 1.0 / 2.2);
+}
+
 static void grade_store(const struct grade_variant *v, struct color c, uint8_t *round,
 			uint8_t *trunc_out)
 {
+	if (v->gamma)
+		c = color_make(grade_gamma(c.r, v->gamma), grade_gamma(c.g, v->gamma),
+			       grade_gamma(c.b, v->gamma));
+	if (v->map & GRADE_MAP_RED_BLUE)
+		c = color_make(c.b, c.g, c.r);
 	if (v->wrap) {
 		round[0] = grade_wrap_channel(c.r, false);
 		round[1] = grade_wrap_channel(c.g, false);
@@ -131,7 +146,17 @@ static void grade_render_chunk(const struct grade_work *w, long item)
 
 	for (k = first; k < last; k++) {
 		uint32_t i = w->pixels ? w->pixels[k] : (uint32_t)k;
-		int x = (int)(i % (uint32_t)img->width), y = (int)(i / (uint32_t)img->width);
+		int x = (int)(i % (uint32_t)img->width), y = (int)(i / (uint32_t)img->width), t;
+		/* The pixel the map takes this one from. */
+		if (v->map & GRADE_MAP_TRANSPOSE) {
+			t = x;
+			x = y;
+			y = t;
+		}
+		if (v->map & GRADE_MAP_MIRROR)
+			x = img->width - 1 - x;
+		if (v->map & GRADE_MAP_FLIP)
+			y = img->height - 1 - y;
 		grade_store(v, grade_pixel(w, v, x, y), img->pixels + (size_t)i * 3,
 			    timg ? timg->pixels + (size_t)i * 3 : NULL);
 	}
@@ -151,27 +176,21 @@ static void *grade_worker(void *arg)
 	return NULL;
 }
 
-int grade_render_causes(const struct grade_job *job, const int *ids, struct image *imgs,
-			struct image *timgs, size_t n, const uint32_t *pixels, size_t n_pixels,
-			struct diag *d)
+int grade_render_variants(const struct grade_job *job, const struct grade_variant *variants,
+			  struct image *imgs, struct image *timgs, size_t n,
+			  const uint32_t *pixels, size_t n_pixels, struct diag *d)
 {
-	struct grade_variant variants[GRADE_MAX_RENDERS];
 	pthread_t threads[GRADE_MAX_THREADS];
 	struct grade_work w;
 	int nthreads = job->threads, started = 0, i;
-	size_t k;
 
-	if (n > GRADE_MAX_RENDERS)
-		return diag_fail(d, RT_E_INVALID, "too many renders");
-	for (k = 0; k < n; k++)
-		grade_variant_of(job, ids[k], &variants[k]);
 	memset(&w, 0, sizeof(w));
 	w.job = job;
 	w.variants = variants;
 	w.imgs = imgs;
 	w.timgs = timgs;
 	w.pixels = pixels;
-	w.n_pixels = pixels ? n_pixels : (size_t)job->camera->size * (size_t)job->camera->size;
+	w.n_pixels = pixels ? n_pixels : (size_t)job->camera->width * (size_t)job->camera->height;
 	w.chunks = (w.n_pixels + GRADE_CHUNK - 1) / GRADE_CHUNK;
 	w.total = (long)(n * w.chunks);
 	if (w.total == 0)
@@ -195,7 +214,7 @@ int grade_render_reference(const struct grade_job *job, struct image *ref, struc
 	struct render_job rj;
 	int rc;
 
-	if ((rc = image_alloc(ref, job->camera->size, job->camera->size, d)) < 0)
+	if ((rc = image_alloc(ref, job->camera->width, job->camera->height, d)) < 0)
 		return rc;
 	render_job_init(&rj, job->scene, job->camera, job->threads);
 	rj.settings = job->settings;
@@ -206,16 +225,25 @@ int grade_render_reference(const struct grade_job *job, struct image *ref, struc
 	return rc;
 }
 
-int grade_cause_image(const struct grade_job *job, const struct image *ref, enum grade_cause c,
-		      struct image *out, struct diag *d)
+int grade_cause_image(const struct grade_job *job, const struct image *ref,
+		      const struct grade_rank *r, struct image *out, struct diag *d)
 {
-	int rc, id = (int)c * GRADE_VARIANTS;
+	struct grade_variant v, also;
+	int rc;
 
-	if (grade_cause_is_transform(c))
-		return grade_transform(ref, c, out, d);
+	if (r->also == RT_CAUSE_NONE && grade_cause_is_transform(r->cause))
+		return grade_transform_map(ref, grade_cause_map(r->cause), out, d);
+	if (!grade_variant_of(job, r->cause, r->form, &v))
+		return diag_fail(d, RT_E_INVALID, "no such form of the cause");
+	if (r->also != RT_CAUSE_NONE) {
+		struct grade_variant one = v;
+		if (!grade_variant_of(job, r->also, r->also_form, &also) ||
+		    !grade_variant_combine(&one, &also, &v))
+			return diag_fail(d, RT_E_INVALID, "no such pair of causes");
+	}
 	if ((rc = image_alloc(out, ref->width, ref->height, d)) < 0)
 		return rc;
-	if ((rc = grade_render_causes(job, &id, out, NULL, 1, NULL, 0, d)) < 0)
+	if ((rc = grade_render_variants(job, &v, out, NULL, 1, NULL, 0, d)) < 0)
 		image_free(out);
 	return rc;
 }
@@ -223,13 +251,62 @@ int grade_cause_image(const struct grade_job *job, const struct image *ref, enum
 int grade_render_truncated(const struct grade_job *job, struct image *out, struct diag *d)
 {
 	struct image rounded;
-	int rc, id = GRADE_PLAIN_RENDER;
+	struct grade_variant plain;
+	int rc;
 
-	if ((rc = image_alloc(&rounded, job->camera->size, job->camera->size, d)) < 0)
+	grade_variant_plain(job, &plain);
+	if ((rc = image_alloc(&rounded, job->camera->width, job->camera->height, d)) < 0)
 		return rc;
-	if ((rc = image_alloc(out, job->camera->size, job->camera->size, d)) == 0 &&
-	    (rc = grade_render_causes(job, &id, &rounded, out, 1, NULL, 0, d)) < 0)
+	if ((rc = image_alloc(out, job->camera->width, job->camera->height, d)) == 0 &&
+	    (rc = grade_render_variants(job, &plain, &rounded, out, 1, NULL, 0, d)) < 0)
 		image_free(out);
 	image_free(&rounded);
+	return rc;
+}
+
+/* The camera c turned by a small angle about its up (yaw) or right axis,
+ * or zoomed by the factor 1 + angle. */
+static void grade_camera_nudge(const struct camera *c, int which, double angle, struct camera *out)
+{
+	double cs = cos(angle), sn = sin(angle);
+
+	*out = *c;
+	if (which == 0) {
+		out->forward = vec3_add(vec3_scale(c->forward, cs), vec3_scale(c->right, sn));
+		out->right = vec3_sub(vec3_scale(c->right, cs), vec3_scale(c->forward, sn));
+	} else if (which == 1) {
+		out->forward = vec3_add(vec3_scale(c->forward, cs), vec3_scale(c->up, sn));
+		out->up = vec3_sub(vec3_scale(c->up, cs), vec3_scale(c->forward, sn));
+	} else {
+		out->half_width *= 1.0 + angle;
+		out->half_height *= 1.0 + angle;
+		out->pixel_scale *= 1.0 + angle;
+		out->pixel_scale_x *= 1.0 + angle;
+	}
+}
+
+int grade_tie_mask(const struct grade_job *job, const struct image *ref, double angle,
+		   uint8_t *mask, long *n_ties, struct diag *d)
+{
+	struct grade_job nudged = *job;
+	struct camera cam;
+	struct image img = { 0, 0, NULL };
+	size_t total = (size_t)ref->width * (size_t)ref->height, i;
+	int k, rc = 0;
+
+	memset(mask, 0, total);
+	*n_ties = 0;
+	nudged.camera = &cam;
+	for (k = 0; k < 6 && rc == 0; k++) {
+		grade_camera_nudge(job->camera, k / 2, k % 2 ? -angle : angle, &cam);
+		if ((rc = grade_render_reference(&nudged, &img, d)) < 0)
+			break;
+		for (i = 0; i < total; i++)
+			if (memcmp(img.pixels + 3 * i, ref->pixels + 3 * i, 3) != 0 && !mask[i]) {
+				mask[i] = 1;
+				(*n_ties)++;
+			}
+		image_free(&img);
+	}
 	return rc;
 }

@@ -20,6 +20,12 @@ void camera_params_default(struct camera_params *p)
 
 int camera_init(struct camera *c, const struct camera_params *p, int size, struct diag *d)
 {
+	return camera_init_rect(c, p, size, size, d);
+}
+
+int camera_init_rect(struct camera *c, const struct camera_params *p, int width, int height,
+		     struct diag *d)
+{
 	const double pi = 3.14159265358979323846;
 	struct vec3 view = vec3_sub(p->look, p->eye);
 	struct vec3 right;
@@ -47,7 +53,7 @@ int camera_init(struct camera *c, const struct camera_params *p, int size, struc
 				"the horizontal field of view (aspect %g times %g degrees) must be "
 				"between 0 and 180 degrees, found %g",
 				p->aspect, p->fov_deg, p->aspect * p->fov_deg);
-	if (size < 1)
+	if (width < 1 || height < 1)
 		return diag_fail(d, RT_E_INVALID, "the image size must be >= 1");
 	c->forward = vec3_scale(view, 1.0 / view_len);
 	right = vec3_cross(c->forward, vec3_scale(p->up, 1.0 / up_len));
@@ -60,15 +66,21 @@ int camera_init(struct camera *c, const struct camera_params *p, int size, struc
 	c->up = vec3_cross(c->right, c->forward);
 	c->eye = p->eye;
 	c->half_height = tan(p->fov_deg * pi / 360.0);
-	c->size = size;
+	c->size = width;
+	c->width = width;
+	c->height = height;
 	/* Once here rather than a division for every pixel. */
-	c->pixel_scale = 2.0 * c->half_height / c->size;
+	c->pixel_scale = 2.0 * c->half_height / height;
 	if (p->aspect > 0.0) {
 		c->half_width = tan(p->aspect * p->fov_deg * pi / 360.0);
-		c->pixel_scale_x = 2.0 * c->half_width / c->size;
-	} else {
+		c->pixel_scale_x = 2.0 * c->half_width / width;
+	} else if (width == height) {
+		/* The square image's: the very bits it always had. */
 		c->half_width = c->half_height;
 		c->pixel_scale_x = c->pixel_scale;
+	} else {
+		c->half_width = c->half_height * width / height;
+		c->pixel_scale_x = 2.0 * c->half_width / width;
 	}
 	c->near = p->near;
 	return 0;

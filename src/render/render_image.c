@@ -205,7 +205,8 @@ void render_job_init(struct render_job *job, const struct scene *s, const struct
 	job->settings.recursion = s->recursion;
 	job->settings.clamp = RT_CLAMP_LEVEL;
 	job->threads = threads;
-	job->x1 = job->y1 = cam->size;
+	job->x1 = cam->width;
+	job->y1 = cam->height;
 }
 
 int render_image(const struct render_job *job, struct image *img,
@@ -218,7 +219,7 @@ int render_image(const struct render_job *job, struct image *img,
 
 	if (!job->scene->accel)
 		return diag_fail(d, RT_E_INVALID, "the scene was not prepared");
-	if (job->x0 < 0 || job->y0 < 0 || job->x1 > job->camera->size || job->y1 > job->camera->size ||
+	if (job->x0 < 0 || job->y0 < 0 || job->x1 > job->camera->width || job->y1 > job->camera->height ||
 	    job->x0 >= job->x1 || job->y0 >= job->y1 ||
 	    img->width != job->x1 - job->x0 || img->height != job->y1 - job->y0)
 		return diag_fail(d, RT_E_INVALID, "bad render region");

@@ -92,24 +92,64 @@ static double rules_wrap(double v)
 }
 
 static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
-				   unsigned rules, const struct ray *r, int level,
-				   const struct glass_stack *glass);
+				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
+				   int level, const struct glass_stack *glass);
 
 struct color shade_rules_trace(const struct scene *s, const struct render_settings *rs,
 			       unsigned rules, const struct ray *r, int level)
 {
+	return shade_rules_trace_floor(s, rs, rules, NULL, r, level);
+}
+
+struct color shade_rules_trace_floor(const struct scene *s, const struct render_settings *rs,
+				     unsigned rules, const struct shade_floor *fl,
+				     const struct ray *r, int level)
+{
 	static const struct glass_stack outside = { 0, { NULL } };
 
-	return rules_trace_in(s, rs, rules, r, level, &outside);
+	return rules_trace_in(s, rs, rules, fl, r, level, &outside);
+}
+
+/* Whether the other floor fl covers the point p of the plane z = 0. */
+static bool rules_floor_covers(const struct shade_floor *fl, struct vec3 p)
+{
+	return fl->half == INFINITY || (p.x >= -fl->half && p.x < fl->half && p.y >= -fl->half &&
+					 p.y < fl->half);
+}
+
+/* The nearest hit with the other floor fl in place of the scene's: the
+ * scene's floor where fl covers its point, else what lies beyond it; and
+ * fl's plane where it covers a point nearer than any other hit. */
+static const struct shape *rules_intersect(const struct scene *s, const struct shade_floor *fl,
+					   const struct ray *r, double eps, double *t)
+{
+	const struct shape *hit = accel_intersect(s->accel, r, eps, t);
+	double tf;
+
+	if (!fl || !s->floor)
+		return hit;
+	while (hit == s->floor && !rules_floor_covers(fl, ray_at(r, *t))) {
+		double t_min = *t;
+		*t = INFINITY;
+		hit = accel_intersect(s->accel, r, t_min, t);
+	}
+	if (hit != s->floor && r->dir.z != 0.0) {
+		tf = -r->origin.z / r->dir.z;
+		if (tf > eps && tf < *t && rules_floor_covers(fl, ray_at(r, tf))) {
+			*t = tf;
+			hit = s->floor;
+		}
+	}
+	return hit;
 }
 
 /* shade.c's render_trace_in, with the rules. */
 static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
-				   unsigned rules, const struct ray *r, int level,
-				   const struct glass_stack *glass)
+				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
+				   int level, const struct glass_stack *glass)
 {
 	double t = INFINITY, eps = render_offset(r->origin);
-	const struct shape *hit = accel_intersect(s->accel, r, eps, &t);
+	const struct shape *hit = rules_intersect(s, fl, r, eps, &t);
 	const struct material *m;
 	struct vec3 p, n, refl, through = { 0.0, 0.0, 0.0 };
 	struct color base, c, spec_color;
@@ -125,6 +165,12 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 	base = shape_color_at(hit, p);
 	if (shape_specular_color_at(hit, p, &spec_color))
 		spec = &spec_color;
+	if (fl && hit == s->floor) {
+		double i = floor((p.x - fl->ox) / fl->cell), j = floor((p.y - fl->oy) / fl->cell);
+		double white = fmod(fabs(i + j), 2.0) == 0.0 ? 1.0 : 0.0;
+		base = color_make(white, white, white);
+		spec = NULL;
+	}
 	if ((rules & RT_RULE_FLOOR_SWAPPED) && strcmp(hit->ops->keyword, "floor") == 0) {
 		/* The cells' colours swapped: white for black and back (a texel
 		 * belongs to its cell and is not swapped, only the highlight). */
@@ -155,7 +201,7 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 
 		bounce.origin = vec3_add_scaled(p, refl, start);
 		bounce.dir = refl;
-		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, &bounce, level + 1, glass),
+		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, fl, &bounce, level + 1, glass),
 					     tir ? 1.0 : m->kr));
 	}
 	if (level < rs->recursion && m->kt > 0.0 && !tir) {
@@ -163,7 +209,7 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 
 		ray_through.origin = vec3_add_scaled(p, through, eps);
 		ray_through.dir = through;
-		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, &ray_through, level + 1,
+		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, fl, &ray_through, level + 1,
 							    &beyond),
 					     m->kt));
 	}

@@ -309,6 +309,11 @@ int scene_image_size(const struct scene *s)
 	return s->image_size;
 }
 
+bool scene_has_floor(const struct scene *s)
+{
+	return s->floor != NULL;
+}
+
 size_t scene_shape_count(const struct scene *s)
 {
 	return s->n_shapes;

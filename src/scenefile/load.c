@@ -33,7 +33,7 @@ int scene_test_scene(struct scene **out, struct diag *d)
 		"-50 50 50  1 1 1\n";
 
 	/* Hashed like a file, for the tiles of the test scene. */
-	static const struct scene_read_options opt = { 1, true, RT_DIALECT_AUTO };
+	static const struct scene_read_options opt = { 1, true, RT_DIALECT_AUTO, false };
 
 	return scene_parse("<test scene>", text, sizeof(text) - 1, &opt, NULL, NULL, out, d);
 }

@@ -214,6 +214,13 @@ int parse_end(struct parser *p, const char *section)
 
 	if (!t.text)
 		return 0;
+	if (lexer_looks_numeric(&t) && p->lenient) {
+		long more = parse_count_numbers(p, RT_MAX_LIGHTS * 16L);
+		parser_note(p, t.line, "ignoring %ld number%s from line %d on: no count describes "
+			    "them (--lenient: read as a program that stops after the %s does)",
+			    more, more == 1 ? "" : "s", t.line, section);
+		return 0;
+	}
 	if (lexer_looks_numeric(&t)) {
 		long more = parse_count_numbers(p, RT_MAX_LIGHTS * 16L);
 		char found[64];
@@ -323,6 +330,7 @@ int scene_parse(const char *name, const char *text, size_t len,
 	p.d = d;
 	p.note = note;
 	p.note_ctx = note_ctx;
+	p.lenient = opt && opt->lenient;
 	if (bom)
 		parser_note(&p, 1, "skipped the UTF-8 byte order mark at the start of the file");
 	s = scene_create(name);

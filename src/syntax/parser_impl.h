@@ -32,6 +32,7 @@ struct parser {
 	int notes_sent, notes_dropped;	/* the notes about shapes, capped */
 	unsigned dialects;		/* object keywords of these dialects (0: any) */
 	const char *dialect_name;	/* the dialect being read, for messages */
+	bool lenient;			/* scene_read_options' lenient */
 	/* The tables of the keywords met lately (zeroed with the parser):
 	 * so that each object of a big file does not take the registry's
 	 * lock, which the threads reading its parts contended for (pthread

@@ -1,0 +1,358 @@
+/* The check of one submitted image: at its own size, against the
+ * reference with its ties left out, then (when it differs) the likely
+ * causes, the camera that took it and the causes at that camera, and
+ * where it differs object by object. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "cli/check.h"
+
+/* A cause "comes close" when its image is CHECK_CLOSE_GAIN dB nearer the
+ * submission than the reference is and at least CHECK_CLOSE_PSNR, or
+ * CHECK_FAR_GAIN dB nearer whatever its PSNR: a second mistake (or a tie
+ * broken otherwise along a tile edge) can keep the right cause from
+ * explaining every pixel. */
+#define CHECK_CLOSE_GAIN 3.0
+#define CHECK_CLOSE_PSNR 30.0
+#define CHECK_FAR_GAIN 6.0
+
+/* The camera found counts as another one when its reference differs from
+ * the given one's in more than this share of the pixels and comes at
+ * least CHECK_MOVED_GAIN dB nearer the submission. */
+#define CHECK_MOVED_SHARE 0.005
+#define CHECK_MOVED_GAIN 1.0
+/* ... and reaches at least this: below it, the camera is as unknown as
+ * before (another scene, another renderer). */
+#define CHECK_MOVED_PSNR 18.0
+/* The fit's precision, in pixels: its ties allow for that much. */
+#define CHECK_FIT_PIXELS 0.35
+
+const struct check_view *check_result_view(const struct check_reference *ref,
+					   const struct check_result *res)
+{
+	if (res->moved)
+		return &res->found;
+	return res->own.image.pixels ? &res->own : &ref->view;
+}
+
+/* The figures of sub against the view's reference, ties left out; and
+ * against its truncated conversion when that is nearer.  Sets res's
+ * figures when fig is res->fig. */
+static int check_figures(struct check_view *v, const struct image *sub, struct grade_figures *fig,
+			 struct grade_figures *rounded, bool *truncated, struct diag *d)
+{
+	struct grade_figures tfig;
+	int rc;
+
+	grade_figures_skipping(&v->image, sub, v->ties, fig);
+	*rounded = *fig;
+	*truncated = false;
+	if (fig->match)
+		return 0;
+	/* The course's code writes (unsigned char)(255 c), a truncation: an
+	 * image that matches the reference converted that way is right. */
+	if (!v->truncated.pixels && (rc = grade_render_truncated(&v->job, &v->truncated, d)) < 0)
+		return rc;
+	grade_figures_skipping(&v->truncated, sub, v->ties, &tfig);
+	*truncated = tfig.psnr > fig->psnr;
+	if (tfig.match)
+		*fig = tfig;
+	return 0;
+}
+
+static void check_explain(struct check_result *res, const struct grade_figures *plain)
+{
+	const struct grade_figures *best = res->n_ranks > 0 ? &res->ranks[0].fig : NULL;
+
+	res->explained = CHECK_NONE;
+	if (!best)
+		return;
+	if (best->match)
+		res->explained = CHECK_EXPLAINED;
+	else if ((best->psnr >= CHECK_CLOSE_PSNR && best->psnr >= plain->psnr + CHECK_CLOSE_GAIN) ||
+		 best->psnr >= plain->psnr + CHECK_FAR_GAIN)
+		res->explained = CHECK_CLOSE;
+}
+
+/* Whether the first cause only moves the pixels about (a mirror, a flip,
+ * a transposition): another camera may explain the image as well. */
+static bool check_first_is_geometric(const struct check_result *res)
+{
+	const struct grade_rank *r = &res->ranks[0];
+	bool a = r->cause <= RT_CAUSE_TRANSPOSED, b = r->also != RT_CAUSE_NONE && r->also <= RT_CAUSE_TRANSPOSED;
+
+	return res->n_ranks > 0 && (a || b);
+}
+
+/* The share of the pixels of a and b whose worst channel differs by more
+ * than 2 levels. */
+static double check_share_differing(const struct image *a, const struct image *b)
+{
+	struct grade_figures f;
+
+	grade_figures_of(a, b, 1, 0, 0, &f);
+	return f.off2;
+}
+
+/* The camera that took the image, when it is not the given one: fitted
+ * from the given camera and the dialect's own. */
+static int check_fit(struct check_reference *ref, const struct check_view *v,
+		     struct check_result *res, struct diag *d)
+{
+	struct camera_params starts[2];
+	struct grade_fit fit;
+	struct grade_figures rounded;
+	bool truncated;
+	double angle;
+	int n = 1, rc;
+
+	starts[0] = v->params;
+	if (ref->camera_given) {
+		camera_params_default(&starts[1]);
+		starts[1].fov_deg = scene_view_of(ref->scene)->fov_deg;
+		starts[1].near = v->params.near;
+		starts[1].aspect = v->params.aspect;
+		n = 2;
+	}
+	if ((rc = grade_fit_camera(&v->job, starts, n, &res->image, &fit, d)) < 0)
+		return rc;
+	res->fitted = true;
+	res->fit_evals = fit.evals;
+	angle = CHECK_FIT_PIXELS * 2.0 * tan(fit.camera.fov_deg * 3.14159265358979323846 / 360.0) /
+		v->camera.height;
+	if ((rc = check_view_make(ref, &fit.camera, v->camera.width, v->camera.height, angle,
+				  &res->found, d)) < 0)
+		return rc;
+	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
+		return rc;
+	res->moved = check_share_differing(&res->found.image, &v->image) > CHECK_MOVED_SHARE &&
+		     res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
+		     res->fig_found.psnr >= CHECK_MOVED_PSNR;
+	if (!res->moved)
+		check_view_free(&res->found);
+	return 0;
+}
+
+/* Whether the submission's floor is textured (the Jan 2023 bonus task:
+ * an image over each cell) where the reference's is a plain checker: over
+ * the floor's pixels inside a cell (the reference smooth around them), the
+ * submission's neighbours differ on average by far more than the
+ * reference's do. */
+#define CHECK_TEXTURE_MIN_PIXELS 2000
+#define CHECK_TEXTURE_DENSE 0.2
+
+static bool check_noisy(const struct image *img, size_t i, int w)
+{
+	const int step[4] = { 1, -1, w, -w };
+	int k, c;
+
+	for (k = 0; k < 4; k++)
+		for (c = 0; c < 3; c++)
+			if (abs((int)img->pixels[3 * i + c] - (int)img->pixels[3 * (size_t)((long)i + step[k]) + c]) > 8)
+				return true;
+	return false;
+}
+
+static bool check_floor_textured(const struct image *ref, const struct image *sub,
+				 const int32_t *ids)
+{
+	const int w = ref->width, h = ref->height;
+	long n = 0, dense = 0;
+	int x, y, i, j;
+
+	/* Pixels of the floor inside a cell of the reference (it is smooth
+	 * around them): in a textured floor most lie in patches where nearly
+	 * every pixel differs from a neighbour; a plain checker's cells,
+	 * even seen from another camera, are flat but for the thin lines
+	 * of their edges. */
+	for (y = 2; y + 2 < h; y++)
+		for (x = 2; x + 2 < w; x++) {
+			size_t p = (size_t)y * (size_t)w + (size_t)x;
+			int noisy = 0;
+			if (ids[p] != GRADE_ID_FLOOR || check_noisy(ref, p, w))
+				continue;
+			n++;
+			for (j = -1; j <= 1; j++)
+				for (i = -1; i <= 1; i++)
+					noisy += check_noisy(sub, (size_t)((long)p + j * w + i), w);
+			dense += noisy >= 7;
+		}
+	if (getenv("CHECK_TRACE"))
+		fprintf(stderr, "texture: %ld pixels, dense %.3f\n", n, n ? (double)dense / n : 0.0);
+	return n >= CHECK_TEXTURE_MIN_PIXELS && (double)dense / (double)n > CHECK_TEXTURE_DENSE;
+}
+
+static int check_objects(const struct check_reference *ref, struct check_result *res,
+			 struct diag *d)
+{
+	const struct check_view *v = check_result_view(ref, res);
+	const struct image *shown = res->truncated && v->truncated.pixels ? &v->truncated : &v->image;
+	size_t total = (size_t)v->camera.width * (size_t)v->camera.height;
+	int rc;
+
+	if (!(res->ids = rt_reallocarray(NULL, total, sizeof(*res->ids))))
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	rc = grade_object_ids(&v->job, res->ids, d);
+	if (rc == 0)
+		rc = grade_objects(&v->job, res->ids, shown, &res->image, v->ties, &res->objects,
+				   &res->n_objects, d);
+	return rc;
+}
+
+/* The submission as it is judged at view v: itself, or with a textured
+ * floor's pixels taken from the reference (that floor is not judged). */
+static int check_judged(const struct check_view *v, struct check_result *res,
+			struct image *judged, struct diag *d)
+{
+	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i;
+	int32_t *ids = rt_reallocarray(NULL, total, sizeof(*ids));
+	int rc;
+
+	memset(judged, 0, sizeof(*judged));
+	if (!ids)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	if ((rc = grade_object_ids(&v->job, ids, d)) < 0)
+		goto out;
+	res->floor_textured = check_floor_textured(&v->image, &res->image, ids);
+	if (!res->floor_textured)
+		goto out;
+	if ((rc = image_alloc(judged, res->image.width, res->image.height, d)) < 0)
+		goto out;
+	memcpy(judged->pixels, res->image.pixels, total * 3);
+	for (i = 0; i < total; i++)
+		if (ids[i] == GRADE_ID_FLOOR)
+			memcpy(judged->pixels + 3 * i, v->image.pixels + 3 * i, 3);
+out:
+	rt_free(ids);
+	return rc;
+}
+
+/* The figures and causes of the submission at view v (judged as
+ * check_judged says): whether it matches, and if not its ranking. */
+static int check_at(struct check_view *v, struct check_result *res, struct grade_figures *fig,
+		    bool rank, struct diag *d)
+{
+	struct image judged;
+	const struct image *sub;
+	int rc;
+
+	if ((rc = check_judged(v, res, &judged, d)) < 0)
+		return rc;
+	sub = judged.pixels ? &judged : &res->image;
+	rc = check_figures(v, sub, fig, &res->fig_rounded, &res->truncated, d);
+	if (rc == 0 && rank && !fig->match) {
+		rc = grade_rank_causes(&v->job, &v->image, &v->truncated, sub, res->ranks,
+				       &res->n_ranks, d);
+		if (rc == 0)
+			check_explain(res, fig);
+	}
+	image_free(&judged);
+	return rc;
+}
+
+int check_image(struct check_reference *ref, const char *path, struct check_result *res,
+		struct diag *d)
+{
+	struct check_view *v = &ref->view;
+	struct grade_rank given[GRADE_MAX_RANKS];
+	size_t n_given;
+	enum check_explained was;
+	bool textured;
+	double best_given;
+	int rc;
+
+	memset(res, 0, sizeof(*res));
+	diag_clear(&res->error);
+	rc = image_read(path, &res->image, NULL, &res->error);
+	if (rc == -RT_E_NOMEM)
+		return diag_fail(d, RT_E_NOMEM, "%s", res->error.msg);
+	if (rc < 0) {
+		res->verdict = CHECK_UNREADABLE;
+		return 0;
+	}
+	if (res->image.width != v->camera.width || res->image.height != v->camera.height) {
+		/* Compared at its own size: the file's size may not be what the
+		 * student rendered (a window's size, another -s). */
+		snprintf(res->size_note, sizeof(res->size_note),
+			 "the image is %dx%d, the scene's size %dx%d: compared with the reference "
+			 "rendered at %dx%d", res->image.width, res->image.height, v->camera.width,
+			 v->camera.height, res->image.width, res->image.height);
+		if ((rc = check_view_make(ref, &ref->params, res->image.width, res->image.height,
+					  v->tie_angle, &res->own, d)) < 0)
+			return rc;
+		v = &res->own;
+	}
+	if ((rc = check_at(v, res, &res->fig, true, d)) < 0)
+		return rc;
+	res->verdict = res->fig.match ? CHECK_MATCH : CHECK_DIFFERS;
+	if (res->fig.match || !ref->fit ||
+	    (res->explained == CHECK_EXPLAINED && !check_first_is_geometric(res)))
+		return check_objects(ref, res, d);
+	/* The image does not fit the camera given: find the one that took
+	 * it, and judge it there. */
+	memcpy(given, res->ranks, sizeof(given));
+	n_given = res->n_ranks;
+	was = res->explained;
+	textured = res->floor_textured;
+	best_given = res->n_ranks > 0 ? res->ranks[0].fig.psnr : res->fig.psnr;
+	if ((rc = check_fit(ref, v, res, d)) < 0)
+		return rc;
+	/* A mirror or a flip that explains the image stays, unless the
+	 * camera found does as well. */
+	if (res->moved && was == CHECK_EXPLAINED && res->fig_found.psnr < best_given) {
+		res->moved = false;
+		check_view_free(&res->found);
+	}
+	if (res->moved) {
+		res->n_ranks = 0;
+		if ((rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0)
+			return rc;
+		if (res->fig_found.match) {
+			res->verdict = CHECK_MATCH;
+			res->explained = CHECK_EXPLAINED;
+		}
+	} else {
+		memcpy(res->ranks, given, sizeof(given));
+		res->n_ranks = n_given;
+		res->explained = was;
+		res->floor_textured = textured;
+	}
+	return check_objects(ref, res, d);
+}
+
+void check_result_free(struct check_result *res)
+{
+	image_free(&res->image);
+	check_view_free(&res->own);
+	check_view_free(&res->found);
+	rt_free(res->objects);
+	rt_free(res->ids);
+	res->objects = NULL;
+	res->ids = NULL;
+}
+
+int check_diff_picture(const struct check_reference *ref, const struct check_result *res,
+		       struct image *out, struct diag *d)
+{
+	const struct check_view *v = check_result_view(ref, res);
+	const struct image *shown = res->truncated && v->truncated.pixels ? &v->truncated : &v->image;
+	size_t slots = scene_shape_count(ref->scene) + 2, k;
+	uint8_t *differs = rt_calloc(slots, 1);
+	int rc;
+
+	if (!differs)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the difference");
+	for (k = 0; k < res->n_objects; k++) {
+		const struct grade_object *o = &res->objects[k];
+		size_t slot = o->index > 0 ? (size_t)o->index + 1 : strcmp(o->keyword, "floor") == 0;
+		if (slot < slots && o->off2 > 5.0 * RT_GRADE_MAX_OFF2)
+			differs[slot] = 1;
+	}
+	rc = grade_diff_picture(shown, &res->image, v->ties, res->ids, differs, out, d);
+	rt_free(differs);
+	return rc;
+}

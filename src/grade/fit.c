@@ -1,0 +1,700 @@
+/* The camera fit: the camera that took a submission, found by rendering
+ * candidates and comparing them with it (analysis by synthesis), coarse
+ * to fine: CMA-ES on a heavily blurred image of a few hundred cells from
+ * the given cameras, then on sharper and larger levels. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "base/alloc.h"
+#include "base/thread.h"
+#include "grade/cmaes.h"
+#include "grade/fit.h"
+
+#define FIT_MAX_THREADS 64
+#define FIT_COARSE_KEEP 32
+
+struct fit_batch {
+	const struct fit_level *level;
+	const struct grade_job *job;
+	const struct camera_params *base;
+	const double *xs;
+	double *fs;
+	float *cells_out;		/* NULL, or each point's cells, 3 n_cells a point */
+	double *points_out;		/* NULL, or each point's cells' points, 4 n_cells a point */
+	int n, next;
+	struct fit_scratch scratch[FIT_MAX_THREADS];
+	int next_thread;
+};
+
+static void *fit_batch_worker(void *arg)
+{
+	struct fit_batch *b = arg;
+	int t = __atomic_fetch_add(&b->next_thread, 1, __ATOMIC_RELAXED), i;
+
+	while (!(b->job->cancel && *b->job->cancel) &&
+	       (i = __atomic_fetch_add(&b->next, 1, __ATOMIC_RELAXED)) < b->n) {
+		b->fs[i] = fit_level_score(b->level, b->job, b->base, b->xs + (size_t)i * FIT_DIM,
+					   &b->scratch[t]);
+		if (b->cells_out)
+			memcpy(b->cells_out + (size_t)i * 3 * (size_t)b->level->n_cells, b->scratch[t].cells,
+			       sizeof(float) * 3 * (size_t)b->level->n_cells);
+		if (b->points_out && b->scratch[t].points)
+			memcpy(b->points_out + (size_t)i * 4 * (size_t)b->level->n_cells, b->scratch[t].points,
+			       sizeof(double) * 4 * (size_t)b->level->n_cells);
+	}
+	return NULL;
+}
+
+/* cmaes_batch_fn: the points scored on the job's threads. */
+static void fit_batch_run(void *ctx, const double *xs, double *fs, int n)
+{
+	struct fit_batch *b = ctx;
+	pthread_t threads[FIT_MAX_THREADS];
+	int nt = b->job->threads < 1 ? 1 : b->job->threads, started = 0, i;
+
+	nt = nt > n ? n : nt;
+	nt = nt > FIT_MAX_THREADS ? FIT_MAX_THREADS : nt;
+	b->xs = xs;
+	b->fs = fs;
+	b->n = n;
+	b->next = 0;
+	b->next_thread = 0;
+	for (i = 0; i < n; i++)
+		fs[i] = INFINITY;
+	for (i = 1; i < nt; i++) {
+		if (rt_thread_start(&threads[i], fit_batch_worker, b) != 0)
+			break;
+		started++;
+	}
+	fit_batch_worker(b);
+	for (i = 1; i <= started; i++)
+		pthread_join(threads[i], NULL);
+}
+
+static int fit_batch_open(struct fit_batch *b, const struct fit_level *l,
+			  const struct grade_job *job, const struct camera_params *base,
+			  struct diag *d)
+{
+	int nt = job->threads < 1 ? 1 : job->threads > FIT_MAX_THREADS ? FIT_MAX_THREADS : job->threads;
+	int i, rc;
+
+	memset(b, 0, sizeof(*b));
+	b->level = l;
+	b->job = job;
+	b->base = base;
+	for (i = 0; i < nt; i++)
+		if ((rc = fit_scratch_alloc(&b->scratch[i], l, d)) < 0)
+			return rc;
+	return 0;
+}
+
+static void fit_batch_close(struct fit_batch *b)
+{
+	int i;
+
+	for (i = 0; i < FIT_MAX_THREADS; i++)
+		fit_scratch_free(&b->scratch[i]);
+}
+
+/* The levels, coarse to fine: grids searched by CMA-ES (the first from
+ * the coarse search's cameras), then patches at the image's edges
+ * refined by Levenberg-Marquardt. */
+struct fit_stage {
+	bool patches;
+	bool lm;		/* grid refined by Levenberg-Marquardt, not CMA-ES */
+	int cells;		/* grid: across the wider side; patches: how many */
+	int ss;			/* grid: samples a cell's side */
+	double sigma;		/* grid: blur in cells; patches: in 1/1000 of the wider side */
+	double step;		/* CMA-ES's largest first step, in fit_scale units */
+	int generations;	/* CMA-ES's; LM's iterations */
+};
+
+static const struct fit_stage fit_stages[] = {
+	{ false, false, 32, 2, 3.0, 1.0, 60 },
+	{ false, true, 48, 2, 2.4, 0.3, 10 },
+	{ false, true, 64, 2, 1.6, 0.15, 10 },
+	{ false, true, 96, 1, 1.6, 0.1, 10 },
+	{ false, true, 128, 1, 1.2, 0.07, 8 },
+	{ false, true, 192, 1, 1.0, 0.0, 6 },
+	{ false, true, 256, 1, 0.8, 0.0, 6 },
+};
+
+static double fit_clock(void)
+{
+	struct timespec t;
+
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static double fit_env(const char *name, double def)
+{
+	const char *s = getenv(name);
+
+	return s && *s ? atof(s) : def;
+}
+
+/* The steps of the local moves (fit_view_move) for the Jacobians at
+ * level of pixel_deg degrees a cell: about a third of a cell. */
+static void fit_move_steps(const double *v, double pivot, double pixel_deg, double *h)
+{
+	double hang = 0.35 * pixel_deg, hrad = hang * 3.14159265358979323846 / 180.0;
+
+	(void)v;
+	h[FIT_ORBIT_YAW] = h[FIT_ORBIT_PITCH] = hang;
+	h[FIT_TURN_ROLL] = 1.5 * hang;
+	h[FIT_PAN_X] = h[FIT_PAN_Y] = hrad * pivot;
+	h[FIT_DOLLY] = 3.0 * hrad * pivot;
+	h[FIT_ZOOM] = hang;
+}
+
+/* The distance along the view to the middle of what camera v sees:
+ * the median depth of the points (w 1) of a render, else 100. */
+static double fit_pivot_of(const double *v, const double *points, int n)
+{
+	struct camera_params base, p;
+	struct vec3 f;
+	double depth[512];
+	int m = 0, k, step = n / 512 + 1, i, j;
+
+	memset(&base, 0, sizeof(base));
+	fit_params_of(v, &base, &p);
+	f = vec3_normalize(vec3_sub(p.look, p.eye));
+	for (k = 0; k < n && m < 512; k += step)
+		if (points[4 * k + 3] != 0.0) {
+			double z = vec3_dot(vec3_sub(vec3_make(points[4 * k], points[4 * k + 1], points[4 * k + 2]), p.eye), f);
+			if (z > 0.0)
+				depth[m++] = z;
+		}
+	if (m == 0)
+		return 100.0;
+	for (i = 1; i < m; i++)
+		for (j = i; j > 0 && depth[j - 1] > depth[j]; j--) {
+			double t = depth[j];
+			depth[j] = depth[j - 1];
+			depth[j - 1] = t;
+		}
+	return depth[m / 2] > 1.0 ? depth[m / 2] : 1.0;
+}
+
+/* Solves the n x n system a x = b (a symmetric positive definite after
+ * damping) by Gaussian elimination with partial pivoting; false when
+ * singular. */
+static bool fit_solve(int n, double a[FIT_DIM][FIT_DIM + 1], double *x)
+{
+	int i, j, k;
+
+	for (i = 0; i < n; i++) {
+		int p = i;
+		for (k = i + 1; k < n; k++)
+			if (fabs(a[k][i]) > fabs(a[p][i]))
+				p = k;
+		if (!(fabs(a[p][i]) > 1e-300))
+			return false;
+		for (k = 0; k <= n; k++) {
+			double t = a[i][k];
+			a[i][k] = a[p][k];
+			a[p][k] = t;
+		}
+		for (k = i + 1; k < n; k++) {
+			double f = a[k][i] / a[i][i];
+			for (j = i; j <= n; j++)
+				a[k][j] -= f * a[i][j];
+		}
+	}
+	for (i = n - 1; i >= 0; i--) {
+		double s = a[i][n];
+		for (j = i + 1; j < n; j++)
+			s -= a[i][j] * x[j];
+		x[i] = s / a[i][i];
+	}
+	return true;
+}
+
+#define FIT_LM_TRIALS 4
+
+/* Gauss-Newton with Levenberg-Marquardt's damping on a grid level, the
+ * Jacobian from the render's own gradient and the flow of its points
+ * (fit_level_jacobian: no extra renders); each iteration tries
+ * FIT_LM_TRIALS dampings at once and goes on from the best, whose render
+ * gives the next Jacobian.  Returns the score at x, which it moves. */
+static double fit_gn(struct fit_batch *b, double *x, double pixel_deg, double *pivot_out,
+		     int iterations, long *evals, struct diag *d, int *rc)
+{
+	const struct fit_level *l = b->level;
+	const size_t n = 3 * (size_t)l->n_cells;
+	double xs[FIT_LM_TRIALS * FIT_DIM], fs[FIT_LM_TRIALS], cost, lambda = 1e-2;
+	float *cells = rt_reallocarray(NULL, n * FIT_LM_TRIALS, sizeof(float));
+	double *points = rt_reallocarray(NULL, 4 * (size_t)l->n_cells * FIT_LM_TRIALS, sizeof(double));
+	float *jac = rt_reallocarray(NULL, n * FIT_DIM, sizeof(float));
+	struct fit_scratch cur;
+	double h[FIT_DIM], pivot = *pivot_out, fd_scale = fit_env("FIT_FD_SCALE", 3.0);
+	int it, i, j, k, fd_every = (int)fit_env("FIT_FD_EVERY", 0);
+	float *fd_cells = fd_every > 0 ? rt_reallocarray(NULL, n * FIT_DIM, sizeof(float)) : NULL;
+	size_t q2;
+
+	*rc = 0;
+	cur.cells = cells;
+	cur.tmp = NULL;
+	cur.points = points;
+	if (!cells || !points || !jac) {
+		*rc = diag_fail(d, RT_E_NOMEM, "out of memory for the camera fit");
+		cost = INFINITY;
+		goto out;
+	}
+	for (k = 0; k < b->job->threads && k < FIT_MAX_THREADS; k++)
+		if (!b->scratch[k].points && (*rc = fit_scratch_points(&b->scratch[k], l, d)) < 0) {
+			cost = INFINITY;
+			goto out;
+		}
+	b->cells_out = cells;
+	b->points_out = points;
+	fit_batch_run(b, x, fs, 1);
+	*evals += 1;
+	cost = fs[0];
+	if (cost < INFINITY)
+		*pivot_out = pivot = fit_pivot_of(x, points, l->n_cells);
+	fit_move_steps(x, pivot, pixel_deg, h);
+	for (it = 0; it < iterations && cost < INFINITY; it++) {
+		double a[FIT_DIM][FIT_DIM + 1], jt_j[FIT_DIM][FIT_DIM], g[FIT_DIM];
+		double lambdas[FIT_LM_TRIALS] = { lambda * 0.1, lambda, lambda * 10.0, lambda * 100.0 };
+		int best = -1;
+		size_t q;
+
+		if (fd_every > 0 && it % fd_every == 0) {
+			/* The Jacobian by forward differences of steps fd_scale h:
+			 * what the image's gradient misses (reflections move
+			 * otherwise than the surfaces they are seen in). */
+			double ps[FIT_DIM * FIT_DIM], pf[FIT_DIM];
+			for (k = 0; k < FIT_DIM; k++) {
+				double q[FIT_DIM] = { 0 };
+				q[k] = h[k] * fd_scale;
+				fit_view_move(x, q, pivot, ps + k * FIT_DIM);
+			}
+			b->cells_out = fd_cells;
+			b->points_out = NULL;
+			fit_batch_run(b, ps, pf, FIT_DIM);
+			b->cells_out = cells;
+			b->points_out = points;
+			*evals += FIT_DIM;
+			for (k = 0; k < FIT_DIM; k++)
+				for (q2 = 0; q2 < n; q2++)
+					jac[(size_t)k * n + q2] = pf[k] < INFINITY ? (float)((fd_cells[(size_t)k * n + q2] - cells[q2]) / (h[k] * fd_scale)) : 0.0f;
+		} else {
+			fit_level_jacobian(l, b->job, b->base, x, h, pivot, &cur, jac);
+		}
+		memset(jt_j, 0, sizeof(jt_j));
+		memset(g, 0, sizeof(g));
+		for (q = 0; q < n; q++) {
+			double wq = l->weight ? l->weight[q / 3] : 1.0, r = wq * (cells[q] - l->target[q]);
+			if (wq == 0.0)
+				continue;
+			for (i = 0; i < FIT_DIM; i++) {
+				double ji = jac[(size_t)i * n + q];
+				g[i] += ji * r;
+				for (j = 0; j <= i; j++)
+					jt_j[i][j] += wq * ji * jac[(size_t)j * n + q];
+			}
+		}
+		if (getenv("FIT_DEBUGJ") && it == 0) {
+			double sw = 0.0;
+			for (q = 0; q < n; q++)
+				sw += l->weight ? l->weight[q / 3] : 1.0;
+			for (k = 0; k < FIT_DIM; k++) {
+				double pp[2 * FIT_DIM], pf2[2], qv[FIT_DIM] = { 0 }, t = fit_env("FIT_DEBUGJ", 3.0);
+				qv[k] = h[k] * t;
+				fit_view_move(x, qv, pivot, pp);
+				qv[k] = -h[k] * t;
+				fit_view_move(x, qv, pivot, pp + FIT_DIM);
+				b->cells_out = NULL;
+				b->points_out = NULL;
+				fit_batch_run(b, pp, pf2, 2);
+				fprintf(stderr, "  d%d: analytic %.4g  fd %.4g   (f+ %.3f f- %.3f f0 %.3f)\n", k, 2.0 * g[k] / sw,
+					(pf2[0] - pf2[1]) / (2.0 * h[k] * t), pf2[0], pf2[1], cost);
+			}
+			b->cells_out = cells;
+			b->points_out = points;
+		}
+		for (k = 0; k < FIT_LM_TRIALS; k++) {
+			double step[FIT_DIM];
+			for (i = 0; i < FIT_DIM; i++) {
+				for (j = 0; j < FIT_DIM; j++)
+					a[i][j] = j <= i ? jt_j[i][j] : jt_j[j][i];
+				a[i][i] += lambdas[k] * (jt_j[i][i] > 1e-9 ? jt_j[i][i] : 1e-9);
+				a[i][FIT_DIM] = -g[i];
+			}
+			if (!fit_solve(FIT_DIM, a, step))
+				memset(step, 0, sizeof(step));
+			fit_view_move(x, step, pivot, xs + k * FIT_DIM);
+		}
+		fit_batch_run(b, xs, fs, FIT_LM_TRIALS);
+		*evals += FIT_LM_TRIALS;
+		for (k = 0; k < FIT_LM_TRIALS; k++)
+			if (fs[k] < cost && (best < 0 || fs[k] < fs[best]))
+				best = k;
+		if (best < 0) {
+			/* Back to the render at x for the next Jacobian. */
+			lambda *= 1000.0;
+			if (lambda > 1e6)
+				break;
+			fit_batch_run(b, x, fs, 1);
+			*evals += 1;
+			continue;
+		}
+		memcpy(x, xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+		if (best > 0) {
+			memcpy(cells, cells + (size_t)best * n, sizeof(float) * n);
+			memcpy(points, points + (size_t)best * 4 * l->n_cells, sizeof(double) * 4 * l->n_cells);
+		}
+		if (getenv("FIT_TRACE"))
+			fprintf(stderr, "  gn %d: %.3f -> %.3f (trial %d)\n", it, cost, fs[best], best);
+		if (cost - fs[best] < 2e-3 * cost) {
+			cost = fs[best];
+			break;
+		}
+		cost = fs[best];
+		lambda = lambdas[best];
+	}
+out:
+	b->cells_out = NULL;
+	b->points_out = NULL;
+	rt_free(cells);
+	rt_free(points);
+	rt_free(jac);
+	rt_free(fd_cells);
+	return cost;
+}
+
+/* The hypotheses the first stages carry: the stage-0 refinements of the
+ * best starting cameras, each refined on the next levels until the one
+ * that fits best there is clear. */
+#define FIT_HYPOTHESES 8
+#define FIT_HYPOTHESIS_STAGES 3
+
+/* A pattern search in the local moves (nearly independent, so one at a
+ * time will do): each iteration scores x moved by +-step along each
+ * move, puts a parabola through each triple and tries the sum of the
+ * parabolas' minima too; the steps halve when nothing improves.  For the
+ * last levels, where the score near the truth is a narrow valley that
+ * the Jacobian's linear model misjudges. */
+static double fit_polish(struct fit_batch *b, double *x, double pivot, const double *h0,
+			 double f0, int iterations, double shrink_to, long *evals)
+{
+	double step[FIT_DIM], xs[(2 * FIT_DIM + 4) * FIT_DIM], fs[2 * FIT_DIM + 4], dir[FIT_DIM] = { 0 };
+	int it, k, halvings = 0, n_pts;
+	bool have_dir = false;
+
+	memcpy(step, h0, sizeof(step));
+	if (!(f0 < INFINITY)) {
+		fit_batch_run(b, x, &f0, 1);
+		*evals += 1;
+	}
+	for (it = 0; it < iterations; it++) {
+		double q[FIT_DIM] = { 0 }, fbest = f0;
+		int best = -1;
+
+		for (k = 0; k < FIT_DIM; k++) {
+			double m[FIT_DIM] = { 0 };
+			m[k] = step[k];
+			fit_view_move(x, m, pivot, xs + (2 * k) * FIT_DIM);
+			m[k] = -step[k];
+			fit_view_move(x, m, pivot, xs + (2 * k + 1) * FIT_DIM);
+		}
+		fit_batch_run(b, xs, fs, 2 * FIT_DIM);
+		*evals += 2 * FIT_DIM;
+		for (k = 0; k < FIT_DIM; k++) {
+			double fp = fs[2 * k], fm = fs[2 * k + 1], a = 0.5 * (fp + fm) - f0, c = 0.5 * (fp - fm), t;
+			if (fp < INFINITY && fm < INFINITY && a > 0.0)
+				t = -c / (2.0 * a);
+			else
+				t = fp < fm ? 1.0 : -1.0;
+			t = t > 1.0 ? 1.0 : t < -1.0 ? -1.0 : t;
+			q[k] = t * step[k];
+		}
+		fit_view_move(x, q, pivot, xs + 2 * FIT_DIM * FIT_DIM);
+		n_pts = 2 * FIT_DIM + 1;
+		/* Along the last iteration's move, 1, 2 and 4 times it: the
+		 * valley's own direction, which steps along the moves only zigzag
+		 * down (Powell's idea). */
+		if (have_dir)
+			for (k = 0; k < 3; k++, n_pts++)
+				for (int i = 0; i < FIT_DIM; i++)
+					xs[n_pts * FIT_DIM + i] = x[i] + (double)(1 << k) * dir[i];
+		fit_batch_run(b, xs + 2 * FIT_DIM * FIT_DIM, fs + 2 * FIT_DIM, n_pts - 2 * FIT_DIM);
+		*evals += n_pts - 2 * FIT_DIM;
+		for (k = 0; k < n_pts; k++)
+			if (fs[k] < fbest) {
+				fbest = fs[k];
+				best = k;
+			}
+		if (getenv("FIT_TRACE"))
+			fprintf(stderr, "  polish %d: %.3f -> %.3f (%d)\n", it, f0, fbest, best);
+		if (best < 0) {
+			for (k = 0; k < FIT_DIM; k++)
+				step[k] *= 0.5;
+			have_dir = false;
+			if (++halvings > shrink_to)
+				break;
+			continue;
+		}
+		for (k = 0; k < FIT_DIM; k++)
+			dir[k] = xs[best * FIT_DIM + k] - x[k];
+		have_dir = true;
+		memcpy(x, xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+		f0 = fbest;
+	}
+	return f0;
+}
+
+/* CMA-ES in the local moves about x (each in units of h): learns the
+ * narrow valley of the last levels, where neither the linear model nor
+ * steps along the moves get far. */
+struct fit_local {
+	struct fit_batch *b;
+	const double *x0;
+	double pivot;
+};
+
+static void fit_local_batch(void *ctx, const double *qs, double *fs, int n)
+{
+	struct fit_local *lc = ctx;
+	double xs[CMAES_MAX_LAMBDA * FIT_DIM];
+	int i;
+
+	for (i = 0; i < n; i++)
+		fit_view_move(lc->x0, qs + i * FIT_DIM, lc->pivot, xs + i * FIT_DIM);
+	fit_batch_run(lc->b, xs, fs, n);
+}
+
+static double fit_local_cmaes(struct fit_batch *b, double *x, double pivot, const double *h,
+			      double f0, int generations, uint64_t seed, long *evals)
+{
+	struct fit_local lc = { b, NULL, pivot };
+	struct cmaes_options o;
+	double x0[FIT_DIM], q[FIT_DIM] = { 0 }, f;
+	long ev = 0;
+
+	memcpy(x0, x, sizeof(x0));
+	lc.x0 = x0;
+	memset(&o, 0, sizeof(o));
+	o.dim = FIT_DIM;
+	o.lambda = (int)fit_env("FIT_CMA_LAMBDA", 10);
+	o.generations = generations;
+	o.sigma = fit_env("FIT_CMA_SIGMA", 1.0);
+	o.sigma_stop = 0.02;
+	o.seed = seed;
+	f = cmaes_minimise(&o, q, h, fit_local_batch, &lc, &ev);
+	*evals += ev;
+	if (f < f0) {
+		fit_view_move(x0, q, pivot, x);
+		return f;
+	}
+	return f0;
+}
+
+/* The checkerboard looks the same from eyes a whole diagonal cell apart
+ * (white where i + j is even): the blurred levels cannot tell them apart
+ * by the floor, only by the objects, which are small.  So each such
+ * neighbour of x, up to two cells each way along both diagonals, is
+ * scored, and x moves to the best. */
+#define FIT_ALIAS_REACH 2
+
+static void fit_floor_aliases(struct fit_batch *b, double *x, long *evals)
+{
+	const struct scene_view *v = scene_view_of(b->job->scene);
+	double xs[(2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1) * FIT_DIM];
+	double fs[(2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1)];
+	double c = v->floor_cell;
+	int i, j, n = 0, k, best = 0;
+
+	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
+		return;
+	for (i = -FIT_ALIAS_REACH; i <= FIT_ALIAS_REACH; i++)
+		for (j = -FIT_ALIAS_REACH; j <= FIT_ALIAS_REACH; j++, n++) {
+			memcpy(xs + n * FIT_DIM, x, sizeof(double) * FIT_DIM);
+			xs[n * FIT_DIM + FIT_X] += c * (i + j);
+			xs[n * FIT_DIM + FIT_Y] += c * (i - j);
+			if (i == 0 && j == 0)
+				best = n;
+		}
+	fit_batch_run(b, xs, fs, n);
+	*evals += n;
+	for (k = 0; k < n; k++)
+		if (fs[k] < fs[best])
+			best = k;
+	memcpy(x, xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+}
+
+/* Stage 0: the starts and the coarse search's cameras scored on the
+ * level, Gauss-Newton from the best few, the FIT_HYPOTHESES best results
+ * into hyp (best first; scores in hf, INFINITY past the last). */
+static int fit_first_stage(struct fit_batch *b, const struct camera_params *starts, int n_starts,
+			   const struct image *sub, double hyp[FIT_HYPOTHESES][FIT_DIM],
+			   double *hf, long *evals, struct diag *d)
+{
+	double xs[(8 + FIT_COARSE_KEEP) * FIT_DIM], fs[8 + FIT_COARSE_KEEP], cs[FIT_COARSE_KEEP];
+	int n = n_starts > 8 ? 8 : n_starts, tries = (int)fit_env("FIT_TRIES", 8), t, k, rc;
+
+	for (k = 0; k < FIT_HYPOTHESES; k++)
+		hf[k] = INFINITY;
+	for (k = 0; k < n; k++)
+		fit_view_of(&starts[k], xs + k * FIT_DIM);
+	if ((rc = fit_coarse_search(b->job, &starts[0], sub, fit_env("FIT_RADIUS", 160),
+				    fit_env("FIT_SPACING", 40), (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs,
+				    FIT_COARSE_KEEP, d)) < 0)
+		return rc;
+	n += FIT_COARSE_KEEP;
+	fit_batch_run(b, xs, fs, n);
+	*evals += n;
+	if (getenv("FIT_TRACE"))
+		for (k = 0; k < n; k++)
+			fprintf(stderr, "fit: candidate %d: %.2f  %.1f %.1f %.1f  %.2f %.2f %.2f %.2f\n", k, fs[k],
+				xs[k * FIT_DIM], xs[k * FIT_DIM + 1], xs[k * FIT_DIM + 2], xs[k * FIT_DIM + 3],
+				xs[k * FIT_DIM + 4], xs[k * FIT_DIM + 5], xs[k * FIT_DIM + 6]);
+	for (t = 0; t < tries; t++) {
+		double x[FIT_DIM], f, pivot = 100.0;
+		int pick = -1, i;
+		long ev = 0;
+
+		for (k = 0; k < n; k++)
+			if (fs[k] < INFINITY && (pick < 0 || fs[k] < fs[pick]))
+				pick = k;
+		if (pick < 0)
+			break;
+		memcpy(x, xs + pick * FIT_DIM, sizeof(x));
+		fs[pick] = INFINITY;
+		f = fit_gn(b, x, x[FIT_FOV] / 32.0, &pivot, (int)fit_env("FIT_S0_GN", 10), &ev, d, &rc);
+		*evals += ev;
+		if (rc < 0)
+			return rc;
+		if (getenv("FIT_TRACE"))
+			fprintf(stderr, "fit: try %d from %d: %.3f  %.1f %.1f %.1f  %.2f %.2f %.2f %.2f\n", t, pick, f,
+				x[0], x[1], x[2], x[3], x[4], x[5], x[6]);
+		for (k = 0; k < FIT_HYPOTHESES; k++)
+			if (f < hf[k]) {
+				for (i = FIT_HYPOTHESES - 1; i > k; i--) {
+					hf[i] = hf[i - 1];
+					memcpy(hyp[i], hyp[i - 1], sizeof(hyp[i]));
+				}
+				hf[k] = f;
+				memcpy(hyp[k], x, sizeof(hyp[k]));
+				break;
+			}
+	}
+	return 0;
+}
+
+/* The level of stage st for an image of sub's size, and its cells' angle
+ * at field of view fov. */
+static int fit_stage_level(const struct fit_stage *st, const struct image *sub, double fov,
+			   struct fit_level *level, double *pixel_deg, struct diag *d)
+{
+	int w, h;
+
+	w = sub->width >= sub->height ? st->cells : (int)lround((double)st->cells * sub->width / sub->height);
+	h = sub->height >= sub->width ? st->cells : (int)lround((double)st->cells * sub->height / sub->width);
+	w = w < 1 ? 1 : w > sub->width ? sub->width : w;
+	h = h < 1 ? 1 : h > sub->height ? sub->height : h;
+	*pixel_deg = fov / h;
+	return fit_level_grid(level, sub, w, h, st->ss, st->sigma, d);
+}
+
+int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
+		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
+{
+	const int n_stages = (int)(sizeof(fit_stages) / sizeof(fit_stages[0]));
+	const int wide = sub->width > sub->height ? sub->width : sub->height;
+	double hyp[FIT_HYPOTHESES][FIT_DIM], hf[FIT_HYPOTHESES], pivot[FIT_HYPOTHESES];
+	double t_start = fit_clock();
+	int s, k, n_hyp = 1, rc = 0;
+
+	memset(out, 0, sizeof(*out));
+	out->camera = starts[0];
+	for (k = 0; k < FIT_HYPOTHESES; k++)
+		pivot[k] = 100.0;
+	fit_view_of(&starts[0], hyp[0]);
+	for (s = 0; s < n_stages && s < (int)fit_env("FIT_STAGES", 99); s++) {
+		const struct fit_stage *st = &fit_stages[s];
+		struct fit_level level;
+		struct fit_batch batch;
+		double pixel_deg;
+		long evals = 0;
+
+		if (s > 0 && st->cells > wide)
+			continue;
+		if ((rc = fit_stage_level(st, sub, hyp[0][FIT_FOV], &level, &pixel_deg, d)) < 0)
+			return rc;
+		if ((rc = fit_batch_open(&batch, &level, job, &starts[0], d)) < 0) {
+			fit_level_free(&level);
+			return rc;
+		}
+		if (s == 0 && getenv("FIT_START")) {
+			sscanf(getenv("FIT_START"), "%lf,%lf,%lf,%lf,%lf,%lf,%lf", &hyp[0][0], &hyp[0][1], &hyp[0][2],
+			       &hyp[0][3], &hyp[0][4], &hyp[0][5], &hyp[0][6]);
+			n_hyp = 1;
+			s = (int)fit_env("FIT_FROM", 3) - 1;
+		} else if (s == 0) {
+			rc = fit_first_stage(&batch, starts, n_starts, sub, hyp, hf, &evals, d);
+			for (n_hyp = 0; n_hyp < FIT_HYPOTHESES && hf[n_hyp] < INFINITY; n_hyp++)
+				;
+		} else {
+			if (s == 1)
+				for (k = 0; k < n_hyp; k++)
+					fit_floor_aliases(&batch, hyp[k], &evals);
+			for (k = 0; k < n_hyp && rc == 0; k++) {
+				hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
+					       st->generations, &evals, d, &rc);
+				if (rc == 0 && s >= (int)fit_env("FIT_CMA_FROM", 99)) {
+					double h0[FIT_DIM];
+					fit_move_steps(hyp[k], pivot[k], hyp[k][FIT_FOV] / level.h, h0);
+					hf[k] = fit_local_cmaes(&batch, hyp[k], pivot[k], h0, hf[k],
+								(int)fit_env("FIT_CMA_GENS", 25), 0x5eed0200u + (uint64_t)s, &evals);
+				}
+				if (rc == 0 && s >= (int)fit_env("FIT_POLISH_FROM", 99)) {
+					double h0[FIT_DIM];
+					fit_move_steps(hyp[k], pivot[k], hyp[k][FIT_FOV] / level.h, h0);
+					for (int k2 = 0; k2 < FIT_DIM; k2++)
+						h0[k2] *= fit_env("FIT_POLISH_STEP", 1.5);
+					hf[k] = fit_polish(&batch, hyp[k], pivot[k], h0, hf[k],
+							   (int)fit_env("FIT_POLISH_ITERS", 12), fit_env("FIT_POLISH_HALVE", 4), &evals);
+				}
+			}
+		}
+		/* The best first; past the hypotheses' stages, the best alone. */
+		for (k = 1; k < n_hyp; k++)
+			if (hf[k] < hf[0]) {
+				double t[FIT_DIM], tf = hf[0], tp = pivot[0];
+				memcpy(t, hyp[0], sizeof(t));
+				memcpy(hyp[0], hyp[k], sizeof(t));
+				memcpy(hyp[k], t, sizeof(t));
+				hf[0] = hf[k];
+				hf[k] = tf;
+				pivot[0] = pivot[k];
+				pivot[k] = tp;
+			}
+		if (s + 1 >= FIT_HYPOTHESIS_STAGES)
+			n_hyp = n_hyp > 0 ? 1 : 0;
+		out->evals += evals;
+		out->score = hf[0];
+		if (getenv("FIT_TRACE"))
+			fprintf(stderr, "fit: [%.2fs] stage %d (%d cells): %.3f after %ld evals  %.2f %.2f %.2f  %.3f %.3f %.3f %.3f\n",
+				fit_clock() - t_start, s, level.n_cells, hf[0], evals,
+				hyp[0][0], hyp[0][1], hyp[0][2], hyp[0][3], hyp[0][4], hyp[0][5], hyp[0][6]);
+		fit_batch_close(&batch);
+		fit_level_free(&level);
+		(void)pixel_deg;
+		if (rc < 0)
+			return rc;
+		if (job->cancel && *job->cancel)
+			return diag_fail(d, RT_E_INTERRUPTED, "interrupted");
+		if (n_hyp == 0)
+			break;
+	}
+	fit_params_of(hyp[0], &starts[0], &out->camera);
+	return 0;
+}

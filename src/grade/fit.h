@@ -1,0 +1,105 @@
+/* The camera fit's parts: the seven numbers a camera is moved by, and the
+ * levels of the image it is fitted on. */
+#ifndef RT_GRADE_FIT_H
+#define RT_GRADE_FIT_H
+
+#include <stdint.h>
+
+#include "whitted/grade.h"
+
+/* A camera as the fit moves it: the eye (x, y, z), the direction of view
+ * as yaw (degrees about +z from +x) and pitch (degrees above the floor's
+ * plane), the roll of up about the view (degrees, 0: up in the vertical
+ * plane of the view, as the default camera's) and the vertical field of
+ * view (degrees).  A camera looking straight up or down has no yaw. */
+enum { FIT_X, FIT_Y, FIT_Z, FIT_YAW, FIT_PITCH, FIT_ROLL, FIT_FOV, FIT_DIM };
+
+void fit_view_of(const struct camera_params *p, double v[FIT_DIM]);
+/* The camera of v, with base's near plane and aspect; the look-at point
+ * 100 units along the view. */
+void fit_params_of(const double v[FIT_DIM], const struct camera_params *base,
+		   struct camera_params *out);
+
+/* Moves of a camera for the fine search, about the point at distance
+ * pivot along its view, each nearly independent of the others in the
+ * image: orbits about the pivot (degrees, about the camera's up and right
+ * axes), roll (degrees), pans along right and up (scene units), a dolly
+ * along the view that keeps the pivot's scale (scene units; the field of
+ * view widens as the eye comes nearer) and a zoom (degrees of field). */
+enum { FIT_ORBIT_YAW, FIT_ORBIT_PITCH, FIT_TURN_ROLL, FIT_PAN_X, FIT_PAN_Y, FIT_DOLLY, FIT_ZOOM };
+void fit_view_move(const double v[FIT_DIM], const double q[FIT_DIM], double pivot,
+		   double out[FIT_DIM]);
+
+/* A level: cells, each the mean of ss x ss pixels of the full image (the
+ * submission's pixels there, and the candidate's colours of the rays
+ * through those very pixels, so that the true camera gives the target
+ * exactly), laid out w x h and blurred by a Gaussian of sigma cells; or,
+ * with h == 0, a list of w single pixels, not blurred. */
+struct fit_level {
+	int w, h, ss;
+	int n_cells, n_samples;
+	int32_t *sx, *sy;		/* the samples' pixels, ss * ss a cell */
+	float *sw;			/* the samples' weights in their cell (NULL: equal) */
+	float *target;			/* 3 a cell, 0..255, blurred */
+	float *weight;			/* a cell's weight (NULL: 1) */
+	double sigma;
+	int recursion;			/* the rays' recursion level */
+};
+
+/* A level of sub (the submission) in cells of w x h, or of the pixels
+ * listed (h 0, pixels[i] = y * width + x). */
+int fit_level_grid(struct fit_level *l, const struct image *sub, int w, int h, int ss,
+		   double sigma, struct diag *d);
+int fit_level_pixels(struct fit_level *l, const struct image *sub, const uint32_t *pixels,
+		     int n, struct diag *d);
+/* A level of about n patches of 5 x 5 pixels (spaced sigma apart, at
+ * least 1), each the Gaussian-weighted mean of its pixels: one a block of
+ * the image, at the block's strongest edge in sub. */
+int fit_level_patches(struct fit_level *l, const struct image *sub, int n, double sigma,
+		      struct diag *d);
+void fit_level_free(struct fit_level *l);
+
+/* What a thread needs to score candidates on a level. */
+struct fit_scratch {
+	float *cells, *tmp;
+	/* When not NULL (fit_scratch_points): each cell's middle sample's
+	 * primary hit (x, y, z, 1), or its direction (x, y, z, 0) when the ray
+	 * hits nothing, filled by fit_level_render. */
+	double *points;
+};
+int fit_scratch_alloc(struct fit_scratch *s, const struct fit_level *l, struct diag *d);
+void fit_scratch_free(struct fit_scratch *s);
+int fit_scratch_points(struct fit_scratch *s, const struct fit_level *l, struct diag *d);
+
+/* The Jacobian of a grid level's cells at v for the moves of
+ * fit_view_move (about pivot), from the render in s (cells and points):
+ * the image's gradient times the flow each move (of step h[k]) gives
+ * each cell's point, jac[k * 3 n_cells + 3 cell + c]. */
+void fit_level_jacobian(const struct fit_level *l, const struct grade_job *job,
+			const struct camera_params *base, const double v[FIT_DIM],
+			const double h[FIT_DIM], double pivot, const struct fit_scratch *s, float *jac);
+
+/* The colours camera v sees in the level's cells, blurred, into s->cells;
+ * -1 for a camera that cannot be. */
+int fit_level_render(const struct fit_level *l, const struct grade_job *job,
+		      const struct camera_params *base, const double v[FIT_DIM],
+		      struct fit_scratch *s);
+/* The mean squared difference (levels^2, over the channels) between the
+ * level's target and the colours of the camera v sees there, rendered
+ * as job says; INFINITY for a camera that cannot be. */
+double fit_level_score(const struct fit_level *l, const struct grade_job *job,
+		       const struct camera_params *base, const double v[FIT_DIM],
+		       struct fit_scratch *s);
+
+/* The first look: eyes on a grid of the spacing within radius of the
+ * start's, each with the best of a few directions, rolls and fields of
+ * view near the start's scored on warps of one wide render; the best
+ * n_out cameras (views) and their scores, best first. */
+int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
+		      const struct image *sub, double radius, double spacing,
+		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d);
+
+/* Blurs 3-channel cells (w x h) in place by a Gaussian of sigma cells. */
+void fit_blur(float *cells, float *tmp, int w, int h, double sigma);
+
+#endif
