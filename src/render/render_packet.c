@@ -100,9 +100,10 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
  * reflections (the mirrors' that are not glass) in one packet more, a
  * level down, each in its hit's lane. */
 static void shade_packet(const struct render_job *job, const struct ray_packet *r,
-			 uint32_t active, int level, struct ray_counts *counts, struct color *out)
+			 uint32_t active, int level, struct render_tree *tree, struct color *out)
 {
 	const struct scene *sc = job->scene;
+	struct ray_counts *counts = tree->counts;
 	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
 	const struct shape *hit[ACCEL_PACKET];
@@ -126,7 +127,7 @@ static void shade_packet(const struct render_job *job, const struct ray_packet *
 	render_shadow_packets(sc, &h.pts, h.hits, &shadows);
 	if (reflects) {
 		hit_lanes_bounce(&h, &bounce);
-		shade_packet(job, &bounce, reflects, level + 1, counts, seen);
+		shade_packet(job, &bounce, reflects, level + 1, tree, seen);
 	}
 	lean = lean_lanes(job, &h, reflects, seen, level, &sum);
 	if (lean) {
@@ -156,7 +157,7 @@ static void shade_packet(const struct render_job *job, const struct ray_packet *
 }
 
 void render_rays_packets(const struct render_job *job, const struct ray *r, int n,
-			 struct ray_counts *counts, struct color *out)
+			 struct render_tree *tree, struct color *out)
 {
 	struct ray_packet p;
 	int i, k;
@@ -167,12 +168,12 @@ void render_rays_packets(const struct render_job *job, const struct ray *r, int 
 		/* The lanes past the rays: copies of the first. */
 		for (k = 0; k < ACCEL_PACKET; k++)
 			ray_packet_set(&p, k, &r[i + (k < m ? k : 0)]);
-		shade_packet(job, &p, packet_lanes(m), 1, counts, out + i);
+		shade_packet(job, &p, packet_lanes(m), 1, tree, out + i);
 	}
 }
 
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
-			  int x1, int y1, struct ray_counts *counts)
+			  int x1, int y1, struct render_tree *tree)
 {
 	const struct camera *cam = job->camera;
 	struct camera_span span;
@@ -211,8 +212,10 @@ void render_block_packets(const struct render_job *job, struct image *img, int x
 					in.uv[k][i] = in.uv[k][0];
 				}
 			camera_lanes(cam, &in, &r);
-			shade_packet(job, &r, packet_lanes(n), 1, counts, c);
-			counts->primary += (uint64_t)n;
+			if (!render_tree_poll(tree))
+				return;
+			shade_packet(job, &r, packet_lanes(n), 1, tree, c);
+			tree->counts->primary += (uint64_t)n;
 			for (y = 0, i = 0; y < rows_n; y++)
 				for (x = px; x < px + cols; x++)
 					render_rgb8(c[i++], bytes[y] + x * 3);

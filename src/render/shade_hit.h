@@ -68,7 +68,10 @@ static inline bool render_reflects(const struct render_settings *rs, const struc
 /* The colour render_trace gives ray r at `level` (outside any glass)
  * whose nearest hit is h, with the shadow answers of pre (NULL: each
  * traced here) and, where render_reflects, the colour its reflection
- * (render_bounce) sees, from the caller (NULL: traced here). */
+ * (render_bounce) sees, from the caller (NULL: traced here).  Its rays
+ * are not bound by a tree (ray_tree.h): render_image sends no scene with
+ * glass through packets, and without glass they are a chain no longer
+ * than the recursion level. */
 struct color render_shade_point(const struct scene *s, const struct render_settings *rs,
 				const struct ray *r, const struct render_point *h, int level,
 				struct ray_counts *counts, const struct render_shadows *pre,
