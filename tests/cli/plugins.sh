@@ -148,6 +148,37 @@ if command -v valgrind >/dev/null 2>&1; then
 else
 	bad "valgrind on a refused plugin" "NOT RUN: valgrind is not installed (make deps)"
 fi
+# A plugin cut short (the first 600 bytes of a good one: an interrupted
+# copy), which dlopen would map and die of with SIGBUS, and one of another
+# processor: refused before dlopen, by every tool.
+head -c 600 "$P/torus.so" >cut.so
+cp "$P/torus.so" foreign.so
+if [ "$(uname -m)" = x86_64 ]; then
+	printf '\267\000' | dd of=foreign.so bs=1 seek=18 conv=notrunc 2>/dev/null
+	foreign="built for aarch64, this is x86-64"
+else
+	printf '\076\000' | dd of=foreign.so bs=1 seek=18 conv=notrunc 2>/dev/null
+	foreign="built for x86-64, this is"
+fi
+for tool in whitted scene2pov whitted-view merge; do
+	case $tool in
+	whitted) run=("$W" -s 16 -o out.png) ;;
+	scene2pov) run=("$S2P" -o out.pov) ;;
+	whitted-view) [ -x "$VIEW" ] || continue; run=("$VIEW") ;;
+	merge) run=("$W" merge -o out.png) ;;
+	esac
+	expect_fail "$tool cut short" "plugin cut.so: not a plugin: the file is cut short (a segment reaches byte" \
+		"${run[@]}" --plugin cut.so torus.txt
+	expect_fail "$tool another processor" "plugin foreign.so: $foreign" \
+		"${run[@]}" --plugin foreign.so torus.txt
+done
+# The loader's test compiles without -Wformat-truncation's warning however
+# deep the checkout (its expected message was a fixed buffer).
+deep=$(printf '/a-rather-deep-checkout%.0s' $(seq 12))/build/plugins
+"$CC" -std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/tests/unit" \
+	-DRT_TEST_PLUGIN_DIR="\"$deep\"" -c -o test_loader.o "$ROOT/tests/unit/plugin/test_loader.c" 2>cc.log
+check "test_loader.c in a deep checkout: no warning ($(head -c 300 cc.log))" [ $? -eq 0 -a ! -s cc.log ]
+
 # Plugins whose methods break their contract (tests/plugins/hostile.c):
 # each is the plugin's error, located at the object's keyword for parse,
 # exit 1, nothing written, and never a crash.
