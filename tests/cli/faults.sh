@@ -278,7 +278,8 @@ rm -rf "$T/nf" && mkdir -p "$T/nf"
 mkfifo "$T/nf/fifo.png"
 python3 -c 'import socket,sys; socket.socket(socket.AF_UNIX).bind(sys.argv[1])' "$T/nf/sock.png" 2>/dev/null
 "$W" -q -s 4 -o "$T/nf/four.png" "$SCENE"
-# not_a_file NAME PATTERN ARGS...: whitted ARGS in $T/nf within 5 s.
+# not_a_file NAME PATTERN COMMAND...: COMMAND in $T/nf within 5 s exits 1
+# with PATTERN (a grep pattern) on stderr, and writes nothing.
 not_a_file() {
 	local name=$1 pattern=$2
 	shift 2
@@ -311,6 +312,33 @@ fi
 rc=$?
 check "grade: a FIFO is unreadable, not waited on (exit $rc)" [ "$rc" -ne 137 ]
 check "grade: the FIFO's row says why" grep -q 'is a named pipe, not a file' "$T/out"
+# Hostile images (tests/tools/hostile_png.py), as a texture and as the
+# compared image: image data that inflates far past the header's 16x16
+# (64 MiB, or the right rows and 8 MiB more), too little data, damaged
+# CRCs (critical and ancillary chunks), sizes over the limit (named), a
+# small file claiming 16384x16384, a cut file, no IEND, a JPEG.  Each is
+# refused with its message in little memory (ulimit -v: far below what
+# inflating a bomb took) and time, nothing written.
+python3 "$ROOT/tests/tools/hostile_png.py" "$T/hp" >/dev/null
+for c in "bomb.png:too much image data: the header's 16x16 needs 784 bytes, the data inflates to more" \
+	"bomb-tail.png:too much image data: the header's 16x16 needs 784 bytes" \
+	"short-data.png:not enough image data: the header's 16x16 needs 784 bytes, the data ends after 392" \
+	"bad-crc.png:damaged PNG file (bad CRC in its IDAT chunk)" \
+	"bad-crc-text.png:damaged PNG file (bad CRC in its tEXt chunk)" \
+	"huge-65535.png:65535x65535 is over the limit of 67108864 pixels (8192x8192)" \
+	"huge-wide.png:2147483647x1 is over the limit of 67108864 pixels (8192x8192)" \
+	"huge-30000.png:30000x30000 is over the limit of 67108864 pixels (8192x8192)" \
+	"claims-16384.png:16384x16384 is over the limit" \
+	"truncated.png:truncated PNG file: a chunk cut short" \
+	"no-iend.png:truncated PNG file: it ends without an IEND chunk" \
+	"jpeg.jpg:a JPEG image, which is not accepted: JPEG is lossy (its pixels are not the ones the program computed); save the image as PNG or BMP"; do
+	f=${c%%:*} m=${c#*:}
+	not_a_file "texture $f" "$f: .*$m" sh -c 'ulimit -v 262144; exec "$@"' sh \
+		"$W" -q -s 8 --floor-texture "$T/hp/$f" -o out.png "$SCENE"
+	not_a_file "compared $f" "$f: .*$m" sh -c 'ulimit -v 262144; exec "$@"' sh \
+		"$W" compare -q -s 4 "$SCENE" "$T/hp/$f"
+done
+
 # The scene itself may be a pipe: read to its end.
 clean_wd
 mkfifo "$T/wd/scene.fifo"
