@@ -298,8 +298,8 @@ int parse_end(struct parser *p, const char *section)
 }
 
 /* Whether the header of the nearfar dialect starts the text: 11 numbers
- * before the first word (scene-format.md, "The dialects", rule 1).  Their
- * third must not be 0: in classic's layout that is an object count of 0
+ * before the first word (scene-format.md, "The dialects", rule 1), nan and
+ * inf counted as numbers.  Their third must not be 0: in classic's layout that is an object count of 0
  * (the only way a classic file has no word that soon: "4 64 0 1 ... 0
  * explanation" is a spot file), and nearfar's FOVY cannot be 0. */
 static bool parse_looks_nearfar(const struct parser *p)
@@ -309,7 +309,9 @@ static bool parse_looks_nearfar(const struct parser *p)
 	struct token t;
 	double third;
 
-	if (!parse_number_ahead(p, 2, &third) || third == 0.0)
+	/* Only a finite 0 rules it out: a header with nan or inf in it is
+	 * still nearfar's, whose parser then names the field. */
+	if (parse_number_ahead(p, 2, &third) && third == 0.0)
 		return false;
 	for (;;) {
 		t = lexer_next(&ahead);
