@@ -367,6 +367,35 @@ static int parse_scene(struct parser *p, struct scene *s, int threads, enum scen
 	return rc;
 }
 
+/* After a forced dialect's error: what auto-detection reads the text as,
+ * added to the message when it reads it whole as another dialect (a spot
+ * file read with --dialect classic fails on its spotlights, which the
+ * auto-detected spot dialect reads). */
+static void parse_say_auto(const char *name, const char *text, size_t len,
+			   const struct scene_read_options *opt, struct diag *d)
+{
+	struct scene_read_options o = *opt;
+	struct scene *s = NULL;
+	struct diag scratch;
+	enum scene_dialect found;
+	size_t n;
+
+	if (!d)
+		return;
+	o.dialect = RT_DIALECT_AUTO;
+	o.hash = false;
+	if (scene_parse(name, text, len, &o, NULL, NULL, &s, &scratch) < 0)
+		return;
+	found = scene_view_of(s)->dialect;
+	scene_destroy(s);
+	if (found == opt->dialect)
+		return;
+	n = strlen(d->msg);
+	snprintf(d->msg + n, sizeof(d->msg) - n,
+		 "; auto-detection (no --dialect %s) reads it without error as the %s dialect",
+		 scene_dialect_name(opt->dialect), scene_dialect_name(found));
+}
+
 int scene_parse(const char *name, const char *text, size_t len,
 		const struct scene_read_options *opt, diag_note_fn *note, void *note_ctx,
 		struct scene **out, struct diag *d)
@@ -400,6 +429,8 @@ int scene_parse(const char *name, const char *text, size_t len,
 		scene_set_source_hash(s, hash_finish(&hash));
 	if (rc < 0) {
 		scene_destroy(s);
+		if (opt && opt->dialect != RT_DIALECT_AUTO)
+			parse_say_auto(name, text, len, opt, d);
 		return rc;
 	}
 	*out = s;
