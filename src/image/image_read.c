@@ -68,7 +68,18 @@ static int image_check_bmp(const unsigned char *b, size_t len, const char *name,
 	}
 	if (h < 0)
 		h = -h;
-	if (w <= 0 || h <= 0 || bpp == 0 || bpp > 32 || (comp != 0 && comp != 3))
+	/* Only uncompressed rows are read: stb_image 2.27 decodes a header
+	 * with any other compression as if uncompressed, the missing bytes as
+	 * zeros (a 60-byte file made 1536x4102 pixels). */
+	if (comp == 1 || comp == 2)
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"cannot read the image (an RLE-compressed BMP): save it uncompressed "
+				"(24-bit) or as PNG");
+	if (comp != 0 && comp != 3)
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"cannot read the image (BMP compression %llu, not uncompressed rows): "
+				"it is damaged or of a kind not read", comp);
+	if (w <= 0 || h <= 0 || bpp == 0 || bpp > 32)
 		return 0;	/* stb's own message says what is wrong */
 	if ((unsigned long long)w * (unsigned long long)h > RT_IMAGE_READ_MAX_PIXELS)
 		return image_read_over_limit(name, (unsigned long long)w, (unsigned long long)h,
