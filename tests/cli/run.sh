@@ -350,4 +350,45 @@ check "stdin error located" grep -q '^<stdin>:1:7: error: ' "$T/err"
 run -s 8 -o t.png --test-scene
 check "test scene" [ "$rc" -eq 0 ]
 
+# The first word: a mistyped subcommand, `whitted help`, a program's name
+# (whitted-view, scene2pov) are not scene files; a scene file of any name
+# is still read when it is there.  Unknown options of every program get a
+# "did you mean".
+clean_wd
+usage_case() {
+	local name=$1 want=$2
+	shift 2
+	(cd "$T/wd" && "$@") >"$T/out" 2>"$T/err"
+	rc=$?
+	check "$name: exit 2, not $rc" [ "$rc" -eq 2 ]
+	check "$name: message ($(head -1 "$T/err"))" grep -qF -- "$want" "$T/err"
+	check "$name: nothing written" wd_empty
+}
+usage_case "whitted comapre" "error: 'comapre' is not a subcommand (and no file); did you mean 'whitted compare'?" \
+	"$W" comapre "$SCENE" x.png
+usage_case "whitted grdae" "did you mean 'whitted grade'?" "$W" grdae --scene "$SCENE" x.png
+usage_case "whitted view" "'view' is not a subcommand (and no file): the viewer is its own program, whitted-view SCENE" \
+	"$W" view x.txt
+usage_case "whitted render" "whitted renders without one, whitted [OPTIONS] SCENE" "$W" render "$SCENE"
+usage_case "whitted help bogus" "help: no subcommand 'bogus'" "$W" help bogus
+(cd "$T/wd" && "$W" help) >"$T/out" 2>"$T/err"
+check "whitted help: exit 0 and the usage" [ $? -eq 0 ] && check "whitted help: the usage" grep -q '^Usage: whitted \[OPTIONS\] SCENE' "$T/out"
+(cd "$T/wd" && "$W" help compare) >"$T/out" 2>"$T/err"
+check "whitted help compare: compare's usage" grep -q '^Usage: whitted compare' "$T/out"
+cp "$SCENE" "$T/wd/comapre"
+run -q -s 8 -o c.png comapre
+check "a scene file named comapre is a scene" [ "$rc" -eq 0 -a -s "$T/wd/c.png" ]
+clean_wd
+usage_case "whitted --samles" "unknown option '--samles'; did you mean '--samples'?" "$W" --samles 2 "$SCENE"
+usage_case "whitted --recusrion=3" "unknown option '--recusrion=3'; did you mean '--recursion'?" "$W" --recusrion=3 "$SCENE"
+usage_case "whitted --bogus (nothing near)" "unknown option '--bogus'" "$W" --bogus "$SCENE"
+check "whitted --bogus: no guess" bash -c "! grep -q 'did you mean' '$T/err'"
+usage_case "merge --ouput" "unknown option '--ouput'; did you mean '--output'?" "$W" merge --ouput x.png a.png
+usage_case "compare --difff" "unknown option '--difff'; did you mean '--diff'?" "$W" compare --difff d.png "$SCENE" a.png
+usage_case "grade --cvs" "unknown option '--cvs'; did you mean '--csv'?" "$W" grade --cvs x.csv --scene "$SCENE" a.png
+usage_case "scene2pov --finsh" "unknown option '--finsh'; did you mean '--finish'?" "$ROOT/build/scene2pov" --finsh plain "$SCENE"
+if [ -x "$ROOT/build/whitted-view" ]; then
+	usage_case "whitted-view --fvo" "unknown option '--fvo'; did you mean '--fov'?" "$ROOT/build/whitted-view" --fvo 50 "$SCENE"
+fi
+
 finish
