@@ -450,16 +450,29 @@ bool pov_export_name_ok(const char *name)
  * sRGB, encodes them); antialiasing and jitter off leave one ray through
  * each pixel centre; Display=Off because Debian's povray.ini opens a
  * preview window otherwise. */
-int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int size,
-		   struct diag *d)
+int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, const char *dir,
+		   int size, struct diag *d)
 {
-	if (!pov_export_name_ok(pov_name) || !pov_export_name_ok(png_name))
+	if (!pov_export_name_ok(pov_name) || !pov_export_name_ok(png_name) ||
+	    (dir && !pov_export_name_ok(dir)))
 		return diag_fail(d, RT_E_INVALID,
 				"POV-Ray's .ini cannot name a file with a quote or control character");
+	if (dir)
+		fprintf(out,
+			"; Written by scene2pov " RT_VERSION ": povray on this file, from any "
+			"directory, renders the scene\n; beside it.\n"
+			"Library_Path=\"%s\"\n"
+			"Input_File_Name=\"%s\"\n"
+			"Output_File_Name=\"%s%s%s\"\n",
+			dir, pov_name, dir, dir[strlen(dir) - 1] == '/' ? "" : "/", png_name);
+	else
+		fprintf(out,
+			"; Written by scene2pov " RT_VERSION ": run povray on this file in its "
+			"directory.\n"
+			"Input_File_Name=\"%s\"\n"
+			"Output_File_Name=\"%s\"\n",
+			pov_name, png_name);
 	fprintf(out,
-		"; Written by scene2pov " RT_VERSION ": run povray on this file in its directory.\n"
-		"Input_File_Name=\"%s\"\n"
-		"Output_File_Name=\"%s\"\n"
 		"Output_File_Type=N\n"
 		"Bits_Per_Color=8\n"
 		"Output_Alpha=Off\n"
@@ -470,7 +483,7 @@ int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int si
 		"Jitter=Off\n"
 		"Display=Off\n"
 		"Pause_When_Done=Off\n",
-		pov_name, png_name, size, size);
+		size, size);
 	if (ferror(out))
 		return diag_fail(d, RT_E_IO, "write error");
 	return 0;

@@ -387,6 +387,19 @@ usage_case "merge --ouput" "unknown option '--ouput'; did you mean '--output'?" 
 usage_case "compare --difff" "unknown option '--difff'; did you mean '--diff'?" "$W" compare --difff d.png "$SCENE" a.png
 usage_case "grade --cvs" "unknown option '--cvs'; did you mean '--csv'?" "$W" grade --cvs x.csv --scene "$SCENE" a.png
 usage_case "scene2pov --finsh" "unknown option '--finsh'; did you mean '--finish'?" "$ROOT/build/scene2pov" --finsh plain "$SCENE"
+# scene2pov says what it wrote, and its .ini names its directory, so that
+# povray runs it from anywhere (tests/povcheck.sh runs it so).
+clean_wd
+mkdir "$T/wd/pov"
+(cd "$T/wd" && "$ROOT/build/scene2pov" -q -s 8 -o pov/s.pov "$SCENE") >"$T/out" 2>"$T/err"
+check "scene2pov: exit 0" [ $? -eq 0 ]
+pov_dir=$(cd "$T/wd/pov" && pwd -P)
+check "scene2pov: says what it wrote ($(cat "$T/out"))" \
+	[ "$(cat "$T/out")" = "scene2pov: wrote pov/s.pov and pov/s.ini; 'povray pov/s.ini' renders $pov_dir/s.png" ]
+check "scene2pov: the .ini's library path is its directory" grep -qx "Library_Path=\"$pov_dir\"" "$T/wd/pov/s.ini"
+check "scene2pov: the .ini writes the PNG beside it" grep -qx "Output_File_Name=\"$pov_dir/s.png\"" "$T/wd/pov/s.ini"
+check "scene2pov: the .ini reads the scene by its name" grep -qx 'Input_File_Name="s.pov"' "$T/wd/pov/s.ini"
+clean_wd
 if [ -x "$ROOT/build/whitted-view" ]; then
 	usage_case "whitted-view --fvo" "unknown option '--fvo'; did you mean '--fov'?" "$ROOT/build/whitted-view" --fvo 50 "$SCENE"
 fi
