@@ -50,12 +50,15 @@ SAN := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer 
 VERSION := $(shell sed -n 's/^\#define RT_VERSION "\(.*\)"/\1/p' include/whitted/version.h)
 
 # Debian packages: the build's, the suites' (make check installs them as
-# root), and the benchmark's.
-CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libcmocka-dev libstb-dev
+# root), and the benchmark's.  scripts/deps.sh looks for what each provides
+# first (pkg-config, a header, a command), so that a system that has the
+# libraries, Debian or not, needs none of them installed; cmocka is the
+# tests' alone.
+CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
 FAST_PKGS := libisal-dev
-CHECK_PKGS := $(CORE_PKGS) valgrind python3 povray povray-includes \
+CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
 BENCH_PKGS := bc

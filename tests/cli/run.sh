@@ -387,6 +387,56 @@ usage_case "merge --ouput" "unknown option '--ouput'; did you mean '--output'?" 
 usage_case "compare --difff" "unknown option '--difff'; did you mean '--diff'?" "$W" compare --difff d.png "$SCENE" a.png
 usage_case "grade --cvs" "unknown option '--cvs'; did you mean '--csv'?" "$W" grade --cvs x.csv --scene "$SCENE" a.png
 usage_case "scene2pov --finsh" "unknown option '--finsh'; did you mean '--finish'?" "$ROOT/build/scene2pov" --finsh plain "$SCENE"
+# scripts/deps.sh (make render, make check): what the build needs is looked
+# for by what it provides, so that a system without dpkg but with the
+# libraries needs nothing (DPKG_QUERY names a program that is not there);
+# what is missing there is named, and nothing installed; on Debian as root
+# apt-get waits for a package lock held by another process (here a POSIX
+# lock on a file of ours, as apt takes it), says so, and gives up after
+# DEPS_LOCK_WAIT seconds (apt-get and dpkg-query are fakes that record).
+DEPS=$ROOT/scripts/deps.sh
+DPKG_QUERY=/nonexistent "$DEPS" build-essential pkg-config libpng-dev zlib1g-dev libstb-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, the libraries found: exit 0, silent ($(cat "$T/err"))" [ $? -eq 0 -a ! -s "$T/err" -a ! -s "$T/out" ]
+DPKG_QUERY=/nonexistent "$DEPS" libpng-dev libnothere-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, one missing: exit 1" [ $? -eq 1 ]
+check "deps: no dpkg, one missing: named, nothing installed" grep -q "not found: libnothere-dev (Debian's package names; not a Debian system, so nothing is" "$T/err"
+DPKG_QUERY=/nonexistent "$DEPS" --optional libnothere-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, an optional one missing: exit 0" [ $? -eq 0 ]
+mkdir -p "$T/deps"
+printf '#!/bin/sh\nexit 1\n' >"$T/deps/dpkg-query"
+printf '#!/bin/sh\necho "$@" >>"%s/deps/apt.log"\n' "$T" >"$T/deps/apt-get"
+chmod +x "$T/deps/dpkg-query" "$T/deps/apt-get"
+: >"$T/deps/lock"
+if [ "$(id -u)" = 0 ] && command -v python3 >/dev/null; then
+	hold_lock() {
+		python3 -c 'import fcntl, sys, time
+f = open(sys.argv[1], "w"); fcntl.lockf(f, fcntl.LOCK_EX); open(sys.argv[1] + ".held", "w").close()
+time.sleep(float(sys.argv[2]))' "$T/deps/lock" "$1" &
+		holder=$!
+		for _ in $(seq 50); do [ -e "$T/deps/lock.held" ] && break; sleep 0.1; done
+	}
+	hold_lock 2
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" DEPS_LOCKS="$T/deps/lock" DEPS_LOCK_WAIT=20 \
+		"$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	check "deps: a held lock: waited, then installed (exit $?)" grep -q 'install -y -qq --no-install-recommends libnothere-dev' "$T/deps/apt.log"
+	check "deps: a held lock: says so" grep -q "^deps: waiting for the package lock, held by process $holder (python3)" "$T/err"
+	check "deps: a held lock: the lock's timeout passed on to apt-get" grep -q 'DPkg::Lock::Timeout=20 install' "$T/deps/apt.log"
+	wait "$holder"
+	rm -f "$T/deps/apt.log" "$T/deps/lock.held"
+	hold_lock 30
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" DEPS_LOCKS="$T/deps/lock" DEPS_LOCK_WAIT=1 \
+		"$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	rc=$?
+	kill "$holder" 2>/dev/null
+	wait "$holder" 2>/dev/null
+	check "deps: a lock held too long: exit 1" [ "$rc" -eq 1 ]
+	check "deps: a lock held too long: says why" grep -q "the package lock is still held after 1 s" "$T/err"
+	check "deps: a lock held too long: apt-get not run" [ ! -e "$T/deps/apt.log" ]
+else
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" "$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	check "deps: not root: the apt-get line" grep -q 'apt-get install -y libnothere-dev' "$T/err"
+fi
+
 # scene2pov says what it wrote, and its .ini names its directory, so that
 # povray runs it from anywhere (tests/povcheck.sh runs it so).
 clean_wd
