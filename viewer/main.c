@@ -58,7 +58,11 @@ static void usage(FILE *f)
 		"  -j, --threads N        threads for reading the file, building the hierarchy\n"
 		"                         and capturing (default: all %d online cores)\n"
 		"  -h, --help             show this help\n"
-		"  -V, --version          show the version\n",
+		"  -V, --version          show the version\n"
+		"\n"
+		"Exit status: 0 the window was closed, 1 scene, input or I/O error (or no\n"
+		"display), 2 bad command line, 128+N when stopped by signal N (a capture in\n"
+		"progress is then removed).\n",
 		cli_scene_help, cli_default_threads());
 }
 
