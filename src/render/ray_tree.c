@@ -34,17 +34,6 @@ void render_tree_init(struct render_tree *t, const struct scene *s,
 	render_tree_pixel(t);
 }
 
-bool render_tree_poll(struct render_tree *t)
-{
-	if (t->state != RENDER_TREE_GOING)
-		return false;
-	if ((t->cancel && *t->cancel) || (t->halt && __atomic_load_n(t->halt, __ATOMIC_RELAXED))) {
-		t->state = RENDER_TREE_CANCELLED;
-		return false;
-	}
-	return true;
-}
-
 bool render_tree_more(struct render_tree *t)
 {
 	uint64_t n;
@@ -87,6 +76,12 @@ bool render_tree_cut_slow(struct render_tree *t, const struct scene *s,
 		return false;
 	t->lost += b;
 	return true;
+}
+
+bool render_tree_would_cut(const struct render_tree *t, const struct scene *s,
+			   const struct render_settings *rs, double w, int level)
+{
+	return w * t->unit < t->cut && w * render_tree_bound(s, rs, rs->recursion - level) < t->cut;
 }
 
 /* Whether v and every value up to lost above it give one byte. */

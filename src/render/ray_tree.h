@@ -107,7 +107,16 @@ static inline void render_tree_unbound(struct render_tree *t, struct ray_counts 
 /* Whether the render goes on: false once the tree is stopped, or the
  * cancel flag or another thread's failure stops it now (for the loops
  * whose rays the tree does not count: packets). */
-bool render_tree_poll(struct render_tree *t);
+static inline bool render_tree_poll(struct render_tree *t)
+{
+	if (t->state != RENDER_TREE_GOING)
+		return false;
+	if ((t->cancel && *t->cancel) || (t->halt && __atomic_load_n(t->halt, __ATOMIC_RELAXED))) {
+		t->state = RENDER_TREE_CANCELLED;
+		return false;
+	}
+	return true;
+}
 
 /* Called when `left` has run out: whether the trace goes on (then `left`
  * is refilled and one ray taken from it); false once it is cancelled or
@@ -125,6 +134,10 @@ static inline bool render_tree_take(struct render_tree *t)
  * cut: computes B and decides. */
 bool render_tree_cut_slow(struct render_tree *t, const struct scene *s,
 			  const struct render_settings *rs, double w, int level);
+/* render_tree_cuts' answer without its effect on `lost`: for the packets,
+ * which leave out of a packet the reflections the shading will cut. */
+bool render_tree_would_cut(const struct render_tree *t, const struct scene *s,
+			   const struct render_settings *rs, double w, int level);
 
 /* Whether a ray of weight w at `level` is left out (then its bound is
  * added to `lost`): never when the cut is 0, as it is without glass. */

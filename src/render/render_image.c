@@ -28,7 +28,7 @@ struct render_shared {
 	const struct render_job *job;
 	struct image *img;
 	long next_block;		/* taken with an atomic add */
-	bool packets;		/* render_packets_wanted, and no glass */
+	bool packets;		/* render_packets_wanted */
 	int halt;		/* set once, atomically, by the first pixel over the budget */
 	int over_x, over_y;	/* that pixel, written by the thread that set halt */
 	long blocks_done;
@@ -268,9 +268,7 @@ int render_image(const struct render_job *job, struct image *img,
 	if (rc < 0)
 		return diag_fail(d, RT_E_NOMEM, "out of memory");
 	pthread_mutex_init(&shared.band_lock, NULL);
-	/* A scene with glass goes ray by ray: its trees weigh their rays,
-	 * which the packets' reflections do not (the same image either way). */
-	shared.packets = render_packets_wanted(job->scene->accel) && !job->scene->glass;
+	shared.packets = render_packets_wanted(job->scene->accel);
 	for (i = 0; i < threads; i++) {
 		memset(&workers[i].counts, 0, sizeof(workers[i].counts));
 		workers[i].shared = &shared;

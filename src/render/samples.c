@@ -10,6 +10,7 @@
 #include "accel/accel.h"
 #include "render/render_packet.h"
 #include "render/samples.h"
+#include "scene/scene_impl.h"
 
 /* The samples of a row of pixels, in their order (pixel by pixel, each
  * pixel's in order), traced ACCEL_PACKET at a time (a pixel's samples,
@@ -81,7 +82,9 @@ void render_block_samples(const struct render_job *job, struct image *img, int x
 		uint8_t *row = img->pixels + (size_t)(y - job->y0) * (size_t)img->width * 3;
 		if (!render_tree_poll(tree))
 			return;
-		if (packets && x1 - x0 <= SAMPLES_ROW_MAX) {
+		/* A scene with glass goes ray by ray: a pixel's samples are one
+		 * tree, which the rows' packets would mix with others'. */
+		if (packets && !job->scene->glass && x1 - x0 <= SAMPLES_ROW_MAX) {
 			samples_row_packets(job, x0, x1, y, offset, tree,
 					    row + (size_t)(x0 - job->x0) * 3);
 			continue;

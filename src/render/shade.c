@@ -415,9 +415,18 @@ struct color render_shade_point(const struct scene *s, const struct render_setti
 				struct ray_counts *counts, const struct render_shadows *pre,
 				const struct color *reflected)
 {
-	static const struct glass_stack outside = { 0, { NULL } };
 	struct render_tree tree;
 
 	render_tree_unbound(&tree, counts);
-	return render_shade_from(s, rs, r, level, &tree, &outside, h, pre, reflected, 1.0);
+	return render_shade_point_tree(s, rs, r, h, level, &tree, 1.0, pre, reflected);
+}
+
+struct color render_shade_point_tree(const struct scene *s, const struct render_settings *rs,
+				     const struct ray *r, const struct render_point *h, int level,
+				     struct render_tree *tree, double weight,
+				     const struct render_shadows *pre, const struct color *reflected)
+{
+	static const struct glass_stack outside = { 0, { NULL } };
+
+	return render_shade_from(s, rs, r, level, tree, &outside, h, pre, reflected, weight);
 }
