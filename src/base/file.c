@@ -152,6 +152,11 @@ static int file_read_path(const char *path, const char *what, size_t limit, bool
 
 	*out = NULL;
 	*out_len = 0;
+	/* Standard input may be a terminal or a pipe nobody writes to: only
+	 * the scene is read from it. */
+	if (is_stdin && regular)
+		return diag_set(d, RT_E_IO, path, 0, 0,
+				"is standard input, not a file (only a scene may come from a pipe)");
 	f = is_stdin ? stdin : file_open(path, regular, d);
 	if (!f)
 		return -RT_E_IO;

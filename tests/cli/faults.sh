@@ -301,6 +301,9 @@ for in in "fifo.png:is a named pipe, not a file" "/dev/zero:is a character devic
 	not_a_file "--path $f" "$f: $why" "$W" -q -s 8 --frames 2 --path "$f" -o out%04d.png "$SCENE"
 	not_a_file "scene2pov texture $f" "$f: $why" "$ROOT/build/scene2pov" -q --floor-texture "$f" -o out.pov "$SCENE"
 done
+# "-" (standard input, maybe a terminal) is only the scene's.
+not_a_file "texture -" "-: is standard input, not a file" "$W" -q -s 8 --floor-texture - -o out.png "$SCENE"
+not_a_file "compared image -" "-: is standard input, not a file" "$W" compare -s 4 "$SCENE" -
 if [ -S "$T/nf/sock.png" ]; then
 	not_a_file "texture socket" "sock.png: is a socket, not a file" \
 		"$W" -q -s 8 --floor-texture sock.png -o out.png "$SCENE"
