@@ -50,12 +50,15 @@ SAN := -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer 
 VERSION := $(shell sed -n 's/^\#define RT_VERSION "\(.*\)"/\1/p' include/whitted/version.h)
 
 # Debian packages: the build's, the suites' (make check installs them as
-# root), and the benchmark's.
-CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libcmocka-dev libstb-dev
+# root), and the benchmark's.  scripts/deps.sh looks for what each provides
+# first (pkg-config, a header, a command), so that a system that has the
+# libraries, Debian or not, needs none of them installed; cmocka is the
+# tests' alone.
+CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
 FAST_PKGS := libisal-dev
-CHECK_PKGS := $(CORE_PKGS) valgrind python3 povray povray-includes \
+CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
 BENCH_PKGS := bc
@@ -71,7 +74,7 @@ SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
 # ---- the programs ---------------------------------------------------------
 # src/cli/tool.c and scene_opts.c are shared by the three programs: the
 # option parsing and the printing that the library never does.
-TOOLS_SRC := src/cli/tool.c src/cli/scene_opts.c src/cli/plugin_opts.c
+TOOLS_SRC := src/cli/tool.c src/cli/scene_opts.c src/cli/plugin_opts.c src/cli/suggest.c
 WHITTED_SRC := $(filter-out $(TOOLS_SRC),$(wildcard src/cli/*.c))
 POV_SRC := $(wildcard pov_export/*.c)
 VIEWER_SRC := $(wildcard viewer/*.c)
@@ -105,7 +108,8 @@ SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-re
 	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
 	install-test newshape plugintest embreecheck
 
-.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images plugins FORCE $(SUITES)
+.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
+	$(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
 $(BUILD)/%.o: %.c
@@ -219,6 +223,12 @@ $(BUILD)/san/fuzz_image_replay: tests/fuzz/replay.c tests/fuzz/image_harness.c t
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -DRT_FUZZ_TARGET=fuzz_image_one -o $@ \
 		tests/fuzz/replay.c tests/fuzz/image_harness.c $(BUILD)/san/libwhitted.a $(LDLIBS)
 
+# The plugin loader's checks' fuzz harness, replayed over tests/fuzz/plugins.
+$(BUILD)/san/fuzz_plugin_replay: tests/fuzz/replay.c tests/fuzz/plugin_harness.c tests/fuzz/harness.h \
+	$(BUILD)/san/libwhitted.a
+	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -DRT_FUZZ_TARGET=fuzz_plugin_one -o $@ \
+		tests/fuzz/replay.c tests/fuzz/plugin_harness.c $(BUILD)/san/libwhitted.a $(LDLIBS)
+
 # ---- make check -----------------------------------------------------------
 # check-deps installs first; the suites then run in a new make, so that what
 # it installed (povray, freeglut) is seen.  Each suite decides at run time
@@ -226,7 +236,7 @@ $(BUILD)/san/fuzz_image_replay: tests/fuzz/replay.c tests/fuzz/image_harness.c t
 # really missing.
 check: check-deps
 	@$(MAKE) --no-print-directory all plugins $(UNIT_BIN) $(BUILD)/san/fuzz_replay \
-		$(BUILD)/san/fuzz_image_replay
+		$(BUILD)/san/fuzz_image_replay $(BUILD)/san/fuzz_plugin_replay
 	@for t in $(SUITES); do $(MAKE) --no-print-directory $$t || exit 1; done
 
 check-deps:
@@ -262,9 +272,10 @@ faults: all
 	@tests/cli/faults.sh
 # With the example plugins loaded, so that the corpus's plugin seeds reach
 # their parsers and intersections.
-fuzz-replay: $(BUILD)/san/fuzz_replay $(BUILD)/san/fuzz_image_replay plugins
+fuzz-replay: $(BUILD)/san/fuzz_replay $(BUILD)/san/fuzz_image_replay $(BUILD)/san/fuzz_plugin_replay plugins
 	@WHITTED_PLUGIN_PATH=$(BUILD)/plugins $(BUILD)/san/fuzz_replay tests/fuzz/corpus tests/errors
 	@$(BUILD)/san/fuzz_image_replay tests/fuzz/images
+	@$(BUILD)/san/fuzz_plugin_replay tests/fuzz/plugins
 threadcheck: all
 	@bench/threadcheck.sh
 features: all plugins
@@ -318,7 +329,17 @@ $(BUILD)/fuzz/fuzz_image: tests/fuzz/fuzz_image.c tests/fuzz/image_harness.c tes
 	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_image.c \
 		tests/fuzz/image_harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
-#   make fuzz-images   the same for the image readers of whitted compare, on tests/fuzz/images
+$(BUILD)/fuzz/fuzz_plugin: tests/fuzz/fuzz_plugin.c tests/fuzz/plugin_harness.c tests/fuzz/harness.h \
+	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_plugin.c \
+		tests/fuzz/plugin_harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+#   make fuzz-plugins  the same for the plugin loader's checks, on tests/fuzz/plugins
+fuzz-plugins: $(BUILD)/fuzz/fuzz_plugin
+	@mkdir -p $(BUILD)/fuzz/plugins $(BUILD)/fuzz/artifacts
+	$(BUILD)/fuzz/fuzz_plugin -max_total_time=$(FUZZ_SECONDS) -max_len=65536 -timeout=10 \
+		-rss_limit_mb=2048 -artifact_prefix=$(BUILD)/fuzz/artifacts/ -print_final_stats=1 \
+		$(BUILD)/fuzz/plugins tests/fuzz/plugins
+#   make fuzz-images   the same for the image readers (and tiles), on tests/fuzz/images
 fuzz-images: $(BUILD)/fuzz/fuzz_image
 	@mkdir -p $(BUILD)/fuzz/images $(BUILD)/fuzz/artifacts
 	$(BUILD)/fuzz/fuzz_image -max_total_time=$(FUZZ_SECONDS) -max_len=16384 -timeout=10 \

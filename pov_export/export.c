@@ -16,6 +16,7 @@
 
 #include "cli/scene_opts.h"
 #include "export.h"
+#include "shapes/registry.h"
 
 struct pov_member {
 	const struct shape *shape;
@@ -299,9 +300,32 @@ static void pov_write_settings(FILE *out, const struct scene *s)
 		scene_recursion(s));
 }
 
+/* Object `index` (0-based) through its table's export_pov: any status but
+ * 0 is a failure, a write error when the file says so and otherwise the
+ * table's own (a plugin that fails without a reason, or returns a
+ * positive number), named with the object and the plugin. */
+static int pov_write_shape(FILE *out, const struct shape *sh, size_t index,
+			   const struct pov_options *opt, struct diag *d)
+{
+	const char *origin;
+	int rc = shape_export_pov(sh, out, opt);
+
+	if (rc == 0)
+		return 0;
+	if (ferror(out))
+		return diag_fail(d, RT_E_IO, "write error");
+	origin = shape_registry_origin(sh->ops);
+	return diag_fail(d, RT_E_RANGE,
+			 "object %zu ('%s' of %s%s): its export_pov %s (returned %d)", index + 1,
+			 sh->ops->keyword, origin ? "the plugin " : "whitted (built in)",
+			 origin ? origin : "", rc > 0 ? "returned neither 0 nor an error" : "failed",
+			 rc);
+}
+
 /* One light group per run of equal colours in members (sorted by colour). */
 static int pov_write_groups(FILE *out, const struct scene *s, const struct pov_fade *fades,
-			    const struct pov_member *m, size_t n, const struct pov_options *opt)
+			    const struct pov_member *m, size_t n, const struct pov_options *opt,
+			    struct diag *d)
 {
 	size_t i = 0, j, k;
 	int rc;
@@ -318,7 +342,7 @@ static int pov_write_groups(FILE *out, const struct scene *s, const struct pov_f
 				pov_write_light(out, "  ", scene_light(s, k), &fades[k], lc);
 		}
 		for (j = i; j < n && pov_same_color(&m[j].shape->mat.color, c); j++)
-			if ((rc = shape_export_pov(m[j].shape, out, opt)) < 0)
+			if ((rc = pov_write_shape(out, m[j].shape, m[j].index, opt, d)) < 0)
 				return rc;
 		fputs("  global_lights off\n}\n", out);
 		i = j;
@@ -330,7 +354,8 @@ static int pov_write_groups(FILE *out, const struct scene *s, const struct pov_f
  * no_shadow, and an unseen opaque copy of it (no_image no_reflection,
  * outside every light group so that every light's shadow rays meet it)
  * casts the shadow. */
-static int pov_write_shadow_twins(FILE *out, const struct scene *s, const struct pov_options *opt)
+static int pov_write_shadow_twins(FILE *out, const struct scene *s, const struct pov_options *opt,
+				  struct diag *d)
 {
 	struct pov_options twin = *opt;
 	size_t i;
@@ -340,7 +365,7 @@ static int pov_write_shadow_twins(FILE *out, const struct scene *s, const struct
 	for (i = 0; i < scene_shape_count(s); i++) {
 		const struct shape *sh = scene_shape(s, i);
 
-		if (sh->mat.kt > 0.0 && (rc = shape_export_pov(sh, out, &twin)) < 0)
+		if (sh->mat.kt > 0.0 && (rc = pov_write_shape(out, sh, i, &twin, d)) < 0)
 			return rc;
 	}
 	return 0;
@@ -386,22 +411,24 @@ int pov_export_scene(FILE *out, const struct scene *s, const struct camera *cam,
 			members[n].shape = sh;
 			members[n].index = i;
 			n++;
-		} else if ((rc = shape_export_pov(sh, out, opt)) < 0) {
+		} else if ((rc = pov_write_shape(out, sh, i, opt, d)) < 0) {
 			goto out_free;
 		}
 	}
 	if (members) {
 		qsort(members, n, sizeof(*members), pov_member_cmp);
-		if ((rc = pov_write_groups(out, s, fades, members, n, opt)) < 0)
+		if ((rc = pov_write_groups(out, s, fades, members, n, opt, d)) < 0)
 			goto out_free;
 	}
-	if ((rc = pov_write_shadow_twins(out, s, opt)) < 0)
+	if ((rc = pov_write_shadow_twins(out, s, opt, d)) < 0)
 		goto out_free;
 out_free:
 	free(members);
 	free(fades);
-	/* The shapes' exports fail only on a write error. */
-	if (rc < 0 || ferror(out))
+	/* A shape's failure has its message already (pov_write_shape). */
+	if (rc < 0)
+		return rc;
+	if (ferror(out))
 		return diag_fail(d, RT_E_IO, "write error");
 	return 0;
 }
@@ -423,16 +450,29 @@ bool pov_export_name_ok(const char *name)
  * sRGB, encodes them); antialiasing and jitter off leave one ray through
  * each pixel centre; Display=Off because Debian's povray.ini opens a
  * preview window otherwise. */
-int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int size,
-		   struct diag *d)
+int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, const char *dir,
+		   int size, struct diag *d)
 {
-	if (!pov_export_name_ok(pov_name) || !pov_export_name_ok(png_name))
+	if (!pov_export_name_ok(pov_name) || !pov_export_name_ok(png_name) ||
+	    (dir && !pov_export_name_ok(dir)))
 		return diag_fail(d, RT_E_INVALID,
 				"POV-Ray's .ini cannot name a file with a quote or control character");
+	if (dir)
+		fprintf(out,
+			"; Written by scene2pov " RT_VERSION ": povray on this file, from any "
+			"directory, renders the scene\n; beside it.\n"
+			"Library_Path=\"%s\"\n"
+			"Input_File_Name=\"%s\"\n"
+			"Output_File_Name=\"%s%s%s\"\n",
+			dir, pov_name, dir, dir[strlen(dir) - 1] == '/' ? "" : "/", png_name);
+	else
+		fprintf(out,
+			"; Written by scene2pov " RT_VERSION ": run povray on this file in its "
+			"directory.\n"
+			"Input_File_Name=\"%s\"\n"
+			"Output_File_Name=\"%s\"\n",
+			pov_name, png_name);
 	fprintf(out,
-		"; Written by scene2pov " RT_VERSION ": run povray on this file in its directory.\n"
-		"Input_File_Name=\"%s\"\n"
-		"Output_File_Name=\"%s\"\n"
 		"Output_File_Type=N\n"
 		"Bits_Per_Color=8\n"
 		"Output_Alpha=Off\n"
@@ -443,7 +483,7 @@ int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int si
 		"Jitter=Off\n"
 		"Display=Off\n"
 		"Pause_When_Done=Off\n",
-		pov_name, png_name, size, size);
+		size, size);
 	if (ferror(out))
 		return diag_fail(d, RT_E_IO, "write error");
 	return 0;

@@ -22,10 +22,13 @@ int pov_export_scene(FILE *out, const struct scene *s, const struct camera *cam,
  * whitted does not. */
 bool pov_export_near_hides(const struct scene *s, const struct camera *cam);
 
-/* Writes the .ini that renders pov_name into png_name (both relative to the
- * directory povray runs in) at size x size pixels with linear output. */
-int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, int size,
-		   struct diag *d);
+/* Writes the .ini that renders pov_name into png_name at size x size pixels
+ * with linear output.  With dir (the absolute directory of both, and of
+ * the textures' images), the .ini works from any directory: POV-Ray finds
+ * the scene and the images there (Library_Path) and writes the PNG there;
+ * with dir NULL both names are relative to the directory povray runs in. */
+int pov_export_ini(FILE *out, const char *pov_name, const char *png_name, const char *dir,
+		   int size, struct diag *d);
 
 /* True when POV-Ray's .ini syntax can carry the name (no quote, no control
  * character, not empty). */

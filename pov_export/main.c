@@ -3,7 +3,7 @@
  * `whitted --clamp final` renders the scene.  The only code of the exporter
  * that reads argv, prints or chooses the exit status: 0 success, 1 a scene,
  * input or I/O error, 2 a bad command line. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700	/* realpath */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -147,6 +147,7 @@ struct writer {
 	const struct camera *cam;
 	const struct pov_options *pov;
 	const char *pov_base, *png_base;
+	const char *dir;		/* the .pov's absolute directory, or NULL */
 };
 
 /* Writes the .pov or the .ini; on failure the file is removed, so that a
@@ -159,7 +160,7 @@ static int write_file(const char *path, const struct writer *w, bool ini, struct
 	if (!f)
 		return diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 	if (ini)
-		rc = pov_export_ini(f, w->pov_base, w->png_base, scene_image_size(w->scene), d);
+		rc = pov_export_ini(f, w->pov_base, w->png_base, w->dir, scene_image_size(w->scene), d);
 	else
 		rc = pov_export_scene(f, w->scene, w->cam, w->pov, d);
 	if (fclose(f) != 0 && rc == 0)
@@ -228,6 +229,33 @@ static int write_textures(const struct scene *s, const char *output, char *paths
 	return 0;
 }
 
+/* The absolute directory of path (malloc'd), for an .ini that works from
+ * any directory; NULL when it cannot be had or an .ini cannot name it (a
+ * quote in it): the .ini's names are then relative. */
+static char *absolute_dir(const char *path)
+{
+	const char *slash = strrchr(path, '/');
+	char *dir, *abs;
+
+	if (!slash)
+		dir = strdup(".");
+	else if (slash == path)
+		dir = strdup("/");
+	else if ((dir = malloc((size_t)(slash - path) + 1)) != NULL) {
+		memcpy(dir, path, (size_t)(slash - path));
+		dir[slash - path] = '\0';
+	}
+	if (!dir)
+		return NULL;
+	abs = realpath(dir, NULL);
+	free(dir);
+	if (abs && !pov_export_name_ok(abs)) {
+		free(abs);
+		abs = NULL;
+	}
+	return abs;
+}
+
 static void remove_textures(char *paths[2])
 {
 	int k;
@@ -247,6 +275,7 @@ static int run(struct options *o)
 	char *ini_path = replace_ext(o->output, ".ini");
 	char *png_base = replace_ext(slash ? slash + 1 : o->output, ".png");
 	char *tex_paths[2] = { NULL, NULL };
+	char *dir = NULL;
 	int rc, status = TOOL_EXIT_FAILURE;
 
 	diag_clear(&d);
@@ -275,6 +304,7 @@ static int run(struct options *o)
 	w.pov = &o->pov;
 	w.pov_base = slash ? slash + 1 : o->output;
 	w.png_base = png_base;
+	w.dir = dir = absolute_dir(o->output);
 	if ((rc = write_file(o->output, &w, false, &d)) < 0) {
 		remove_textures(tex_paths);
 		goto out;
@@ -284,12 +314,19 @@ static int run(struct options *o)
 		remove_textures(tex_paths);
 		goto out;
 	}
-	status = 0;
+	/* What was written, and how to render it. */
+	printf("scene2pov: wrote %s and %s", o->output, ini_path);
+	if (tex_paths[0] || tex_paths[1])
+		printf(" (with %s%s%s)", tex_paths[0] ? tex_paths[0] : "",
+		       tex_paths[0] && tex_paths[1] ? ", " : "", tex_paths[1] ? tex_paths[1] : "");
+	printf("; 'povray %s' renders %s%s%s\n", ini_path, dir ? dir : "", dir ? "/" : "", png_base);
+	status = fflush(stdout) == 0 ? 0 : TOOL_EXIT_FAILURE;
 out:
 	if (rc < 0)
 		tool_print_diag(&d, "error");
 	free(tex_paths[0]);
 	free(tex_paths[1]);
+	free(dir);
 	scene_destroy(s);
 	free(ini_path);
 	free(png_base);

@@ -329,6 +329,26 @@ for scene in "$s"/*.txt; do
 	clamp_pair "$(basename "$scene" .txt)-r1" identical "$scene" -r 1
 done
 
+# scene2pov's .ini works from any directory: povray run from the parent
+# (with a textured floor, whose image the .pov names) writes the PNG beside
+# the .pov, the image (its pixels: POV-Ray's PNG has its own text) of the
+# same run from its own directory.
+rm -rf "$out/anywhere" && mkdir -p "$out/anywhere/sub" "$out/home"
+"$build/scene2pov" -q -s 32 --floor-texture "$root/tests/textures/white.bmp" -o "$out/anywhere/sub/a.pov" \
+	"$s/sphere.txt" >/dev/null &&
+	(cd "$out/anywhere" && HOME="$out/home" povray sub/a.ini +WT2 -V >povray.log 2>&1) &&
+	[ -s "$out/anywhere/sub/a.png" ] && mv "$out/anywhere/sub/a.png" "$out/anywhere/from-parent.png" &&
+	(cd "$out/anywhere/sub" && HOME="$out/home" povray a.ini +WT2 -V >>../povray.log 2>&1) &&
+	"$build/imgcmp" "$out/anywhere/sub/a.png" "$out/anywhere/from-parent.png" | grep -q '^psnr=inf .*max=0 '
+if [ $? -eq 0 ]; then
+	pass=$((pass + 1))
+	printf '%-34s %s\n' "ini-from-anywhere" "ok"
+else
+	fail=$((fail + 1))
+	failed="$failed ini-from-anywhere"
+	printf '%-34s %s\n' "ini-from-anywhere" "FAIL (povray from the parent: $(tail -3 "$out/anywhere/povray.log"))"
+fi
+
 # Antialiasing, textured floors and glass (issue 14).
 . "$root/tests/povcheck-features.sh"
 

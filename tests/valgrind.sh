@@ -1,7 +1,8 @@
 #!/bin/bash
 # The CLI under valgrind (memcheck, every leak kind an error) on every scene
 # of scenes/, the real scene files, every malformed file of tests/errors and
-# a few command-line and output errors, at a small size with two threads.
+# a few command-line and output errors, hostile images, glass trees and a
+# FIFO as an input, at a small size with two threads.
 # Each run must end with its usual status (0 or 1 or 2), never valgrind's 99.
 SUITE=valgrind
 . "$(dirname "$0")/cli/lib.sh"
@@ -139,6 +140,21 @@ done
 vg "compare wrong size" 1 compare -q -s 40 "$ROOT/scenes/scene.txt" "$CI/ascii.ppm"
 vg "grade with a report" 3 grade -q -s 72 -j 2 --scene "$ROOT/scenes/scene.txt" -o r.html --csv r.csv \
 	"$CI/topdown.bmp" "$CI/other.png" "$CI/truncated.bmp"
+# Hostile inputs of the sturdiness pass: images (hostile_png.py) as a
+# texture and compared, a tree of glass rays over --max-rays, the glass
+# sphere at recursion 256, a FIFO as a texture.
+python3 "$ROOT/tests/tools/hostile_png.py" "$T/hp" >/dev/null
+for f in bomb.png bad-crc.png short-data.png huge-30000.png claims-16384.png truncated.png jpeg.jpg; do
+	vg "texture $f" 1 -s 8 --floor-texture "$T/hp/$f" -o out.png "$ROOT/scenes/scene.txt"
+	vg "compared $f" 1 compare -q -s 8 "$ROOT/scenes/scene.txt" "$T/hp/$f"
+done
+printf '256 32 2 sphere -31 0 30 30 0.9 0.9 1 0.1 0.3 0.3 1 8 sphere 31 0 30 30 0.9 0.9 1 0.1 0.3 0.3 1 8 1 -100 -150 200 1 1 1\n' >"$T/tree.txt"
+vg "a glass tree over --max-rays" 1 -j 2 --glass 1:1.5:0.9,2:1.5:0.9 --max-rays 3000 -o out.png "$T/tree.txt"
+printf '256 32 1 sphere 0 0 30 30 0.9 0.9 1 0.1 0.3 0.3 0.5 8 1 -100 -150 200 1 1 1\n' >"$T/sphere256.txt"
+vg "a glass sphere at recursion 256" 0 -j 2 --glass 1 -o out.png "$T/sphere256.txt"
+rm -f "$T/fifo.png" && mkfifo "$T/fifo.png"
+vg "a FIFO as a texture" 1 -s 8 --floor-texture "$T/fifo.png" -o out.png "$ROOT/scenes/scene.txt"
+
 clean_wd
 (cd "$T/wd" && exec $VG "$W" -s 1000 -j 2 -o x.png "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err" &
 pid=$!

@@ -18,6 +18,7 @@
 
 #include "draw.h"
 #include "light_marker.h"
+#include "shapes/registry.h"
 #include "whitted/mesh.h"
 
 /* Primitives noted as drawn without a mesh of their own, per kind of note;
@@ -240,9 +241,18 @@ static int emit_shape(const struct shape *sh, const struct mesh_options *opt, st
 	if (!shape_tessellates(sh))
 		note_no_mesh(dn, sh, shape_bounds(sh, &b));
 	mesh_clear(m);
-	/* The meshes can fail only for memory. */
-	if ((rc = shape_tessellate(sh, opt, m)) < 0)
+	/* The built-ins' meshes fail only for memory; a plugin's tessellate
+	 * may fail otherwise, or return what is no status. */
+	if ((rc = shape_tessellate(sh, opt, m)) == -RT_E_NOMEM)
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the shapes' meshes");
+	if (rc != 0) {
+		const char *origin = shape_registry_origin(sh->ops);
+
+		return diag_fail(d, RT_E_RANGE, "shape '%s' of %s%s: its tessellate %s (returned %d)",
+				 sh->ops->keyword, origin ? "the plugin " : "whitted (built in)",
+				 origin ? origin : "",
+				 rc > 0 ? "returned neither 0 nor an error" : "failed", rc);
+	}
 	if (m->n_vertices) {
 		emit_mesh(sh, m, dr);
 		box_include_mesh(&dr->world, m);

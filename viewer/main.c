@@ -9,6 +9,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include <GL/freeglut.h>
 #include <math.h>
+#include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,7 +58,11 @@ static void usage(FILE *f)
 		"  -j, --threads N        threads for reading the file, building the hierarchy\n"
 		"                         and capturing (default: all %d online cores)\n"
 		"  -h, --help             show this help\n"
-		"  -V, --version          show the version\n",
+		"  -V, --version          show the version\n"
+		"\n"
+		"Exit status: 0 the window was closed, 1 scene, input or I/O error (or no\n"
+		"display), 2 bad command line, 128+N when stopped by signal N (a capture in\n"
+		"progress is then removed).\n",
 		cli_scene_help, cli_default_threads());
 }
 
@@ -298,6 +304,62 @@ static void on_special(int key, int x, int y)
 	glutPostRedisplay();
 }
 
+/* SIGINT, SIGTERM or SIGHUP: the signal, for on_signal_poll. */
+static volatile sig_atomic_t viewer_signal;
+/* The exit status once the main loop has returned: 128 + the signal. */
+static int viewer_status;
+
+static void on_signal(int sig)
+{
+	viewer_signal = sig;
+}
+
+/* Polled by a timer: after a signal, the capture in progress is cancelled
+ * and joined (its unfinished capture-N.png removed) and the viewer quits
+ * with 128 + the signal, as whitted does. */
+static void on_signal_poll(int value)
+{
+	struct diag d;
+
+	(void)value;
+	if (!viewer_signal) {
+		glutTimerFunc(VIEW_POLL_MS, on_signal_poll, 0);
+		return;
+	}
+	if (v.capture.running) {
+		capture_cancel(&v.capture);
+		capture_join(&v.capture, &d);
+	}
+	viewer_status = 128 + (int)viewer_signal;
+	glutLeaveMainLoop();
+}
+
+static void catch_signals(void)
+{
+	struct sigaction sa;
+
+	memset(&sa, 0, sizeof(sa));
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+	sigaction(SIGHUP, &sa, NULL);
+	glutTimerFunc(VIEW_POLL_MS, on_signal_poll, 0);
+}
+
+/* freeglut's fatal errors (no display to open): one line of ours, then
+ * the exit freeglut would have made. */
+static void on_glut_error(const char *fmt, va_list ap)
+{
+	char why[256];
+
+	vsnprintf(why, sizeof(why), fmt, ap);
+	fprintf(stderr, "%s: error: %s (whitted-view needs an X display: run it on a desktop, "
+		"or under xvfb-run; whitted renders without one)\n", tool_name(), why);
+	scene_destroy(v.scene);
+	exit(TOOL_EXIT_FAILURE);
+}
+
 static void on_close(void)
 {
 	struct diag d;
@@ -348,6 +410,14 @@ int main(int argc, char **argv)
 		return status;
 	}
 	/* GLUT sees no arguments of ours; the display comes from DISPLAY. */
+	if (!getenv("DISPLAY") || !getenv("DISPLAY")[0]) {
+		fprintf(stderr, "%s: error: no display: DISPLAY is not set (whitted-view needs an X "
+			"display: run it on a desktop, or under xvfb-run; whitted renders without "
+			"one)\n", tool_name());
+		scene_destroy(v.scene);
+		return TOOL_EXIT_FAILURE;
+	}
+	glutInitErrorFunc(on_glut_error);
 	glutInit(&glut_argc, glut_argv);
 	glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
 	glutInitDisplayMode(GLUT_RGB | GLUT_DOUBLE | GLUT_DEPTH);
@@ -366,9 +436,10 @@ int main(int argc, char **argv)
 	glutKeyboardFunc(on_key);
 	glutSpecialFunc(on_special);
 	glutCloseFunc(on_close);
+	catch_signals();
 	fprintf(stderr, "whitted-view: %s, %zu objects, %zu lights; press h for the keys\n",
 		v.scene_name, scene_shape_count(v.scene), scene_light_count(v.scene));
 	glutMainLoop();
 	scene_destroy(v.scene);
-	return 0;
+	return viewer_status;
 }

@@ -34,7 +34,9 @@ struct render_settings {
 
 /* The colour seen along a ray with unit direction, at recursion level
  * `level` (a primary ray is level 1).  Counts rays into *counts when it is
- * not NULL.  Allocates nothing. */
+ * not NULL.  Allocates nothing.  Its bytes (render_color_to_rgb8) are the
+ * whole tree's; a tree over RT_DEFAULT_MAX_RAYS rays is cut short there
+ * (render_image fails such a pixel instead). */
 struct color render_trace(const struct scene *s, const struct render_settings *rs,
 			  const struct ray *r, int level, struct ray_counts *counts);
 
@@ -49,7 +51,15 @@ struct render_job {
 	/* The rectangle of the full image to render, end-exclusive; the image
 	 * is (x1 - x0) x (y1 - y0). */
 	int x0, y0, x1, y1;
-	const volatile sig_atomic_t *cancel;	/* polled per block; may be NULL */
+	/* Polled every few thousand rays (and at every pixel or packet of
+	 * pixels), so that a signal stops even one huge pixel; may be NULL. */
+	const volatile sig_atomic_t *cancel;
+	/* The most rays the tree of one primary ray (a pixel's, or a sample's)
+	 * may have, its reflections and transmissions (0: RT_DEFAULT_MAX_RAYS;
+	 * else at least RT_MIN_MAX_RAYS): a pixel that needs more fails the
+	 * render with RT_E_RANGE, naming it.  No image is changed by a limit
+	 * it does not reach. */
+	uint64_t max_rays;
 	/* Called now and then with the work done and the total (in blocks of
 	 * 16x16 pixels); may be NULL. */
 	void (*progress)(void *ctx, long done, long total);
@@ -77,6 +87,11 @@ struct render_job {
  * no progress.  Callers change what they need after it. */
 void render_job_init(struct render_job *job, const struct scene *s, const struct camera *cam,
 		     int threads);
+
+/* The default of render_job's max_rays (--max-rays): 2^20 rays a tree;
+ * the least, the longest chain of reflections without glass. */
+#define RT_DEFAULT_MAX_RAYS ((uint64_t)1 << 20)
+#define RT_MIN_MAX_RAYS RT_MAX_RECURSION
 
 /* The largest --samples N (N x N rays a pixel). */
 #define RT_MAX_SAMPLES 16

@@ -62,8 +62,12 @@ struct shape_ops {
 	unsigned dialects;
 
 	/* Reads the geometry and material after the keyword.  Returns 0 with a
-	 * whole shape in *out, or a negative enum rt_err with *out NULL and the
-	 * parser's diagnostic filled in. */
+	 * whole shape in *out (whose ops is this table), or a negative enum
+	 * rt_err with *out NULL and the parser's diagnostic filled in.  The
+	 * host checks the answer: 0 without a shape or with another table's,
+	 * a positive number, or an error without a message is the table's
+	 * fault, reported at the object's keyword (a shape of another table is
+	 * freed by this table's destroy). */
 	int (*parse)(struct parser *p, struct shape **out);
 	/* Nearest hit with t in (t_min, *t_max); on a hit shrinks *t_max to it.
 	 * The direction need not be unit length. */
@@ -239,6 +243,8 @@ bool shape_closed(const struct shape *s);
 /* True when the primitive makes its own mesh; false when shape_tessellate
  * gives its bounding box (or nothing, if it is unbounded) instead. */
 bool shape_tessellates(const struct shape *s);
+/* The table's status as it is: any value but 0 is a failure (a plugin's
+ * positive number too), which the caller reports as the table's own. */
 int shape_tessellate(const struct shape *s, const struct mesh_options *opt, struct mesh *out);
 int shape_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt);
 void shape_destroy(struct shape *s);

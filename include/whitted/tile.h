@@ -45,11 +45,17 @@ int tile_write(const char *path, const struct image *img, const struct tile_info
 
 /* Reads a tile's description and, when img is not NULL, its pixels (img is
  * then allocated, the region's size; free it with image_free).  A file
- * that is not a PNG, a damaged or truncated one (a bad CRC in any chunk
- * read), one that is not 8-bit RGB, a PNG without a valid whitted-tile
- * chunk, or one whose chunks disagree fails with RT_E_SYNTAX; unreadable
- * files with RT_E_IO.  Without img, only the chunks before the image data
- * are read: damage in the image data shows when the pixels are read. */
+ * that is not a PNG, a damaged or truncated one (a bad CRC in any chunk),
+ * one with bytes after its IEND chunk, one whose image data inflates to
+ * more or less than its header describes or whose size is over
+ * RT_MAX_PIXELS, one that is not 8-bit RGB, a PNG without a valid
+ * whitted-tile chunk, or one whose chunks disagree fails with
+ * RT_E_SYNTAX (the size: RT_E_RANGE), all before anything the size of
+ * the image is allocated; unreadable files (and what is not a regular
+ * file) with RT_E_IO. */
 int tile_read(const char *path, struct tile_info *info, struct image *img, struct diag *d);
+/* tile_read of a file's bytes b[0..n), named `name` in messages. */
+int tile_read_memory(const unsigned char *b, size_t n, const char *name, struct tile_info *info,
+		     struct image *img, struct diag *d);
 
 #endif

@@ -3,10 +3,12 @@
  * reader allocate without bound. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "base/alloc.h"
 #include "base/file.h"
@@ -75,8 +77,73 @@ static int file_read_stream(FILE *f, const char *name, const char *what, size_t 
 	return 0;
 }
 
-int file_read_all(const char *path, const char *what, size_t limit,
-		  char **out, size_t *out_len, struct diag *d)
+/* What a file that is not a regular one is, for the message. */
+static const char *file_kind(mode_t mode)
+{
+	if (S_ISFIFO(mode))
+		return "a named pipe";
+	if (S_ISCHR(mode))
+		return "a character device";
+	if (S_ISBLK(mode))
+		return "a block device";
+	if (S_ISSOCK(mode))
+		return "a socket";
+	return "not a regular file";
+}
+
+/* Opens path for reading: only a regular file (or a directory, which the
+ * read refuses with its own message) when `regular`, opened without
+ * waiting (a named pipe's open waits for a writer; O_NONBLOCK's does not,
+ * and fstat then tells what it is). */
+static FILE *file_open(const char *path, bool regular, struct diag *d)
+{
+	struct stat st;
+	FILE *f;
+	int fd;
+
+	errno = 0;
+	if (!regular) {
+		f = fopen(path, "rb");
+		if (!f)
+			diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
+				 errno ? strerror(errno) : "out of memory");
+		return f;
+	}
+	fd = open(path, O_RDONLY | O_NONBLOCK);
+	if (fd < 0) {
+		int err = errno;
+
+		/* A socket cannot be opened at all (ENXIO): say what it is. */
+		if (stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+			diag_set(d, RT_E_IO, path, 0, 0,
+				 "is %s, not a file (only a scene may come from a pipe)",
+				 file_kind(st.st_mode));
+		else
+			diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s", strerror(err));
+		return NULL;
+	}
+	if (fstat(fd, &st) != 0) {
+		diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s", strerror(errno));
+		close(fd);
+		return NULL;
+	}
+	if (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+		diag_set(d, RT_E_IO, path, 0, 0, "is %s, not a file (only a scene may come from a pipe)",
+			 file_kind(st.st_mode));
+		close(fd);
+		return NULL;
+	}
+	f = fdopen(fd, "rb");
+	if (!f) {
+		diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
+			 errno ? strerror(errno) : "out of memory");
+		close(fd);
+	}
+	return f;
+}
+
+static int file_read_path(const char *path, const char *what, size_t limit, bool regular,
+			  char **out, size_t *out_len, struct diag *d)
 {
 	bool is_stdin = strcmp(path, "-") == 0;
 	const char *name = is_stdin ? "<stdin>" : path;
@@ -85,13 +152,28 @@ int file_read_all(const char *path, const char *what, size_t limit,
 
 	*out = NULL;
 	*out_len = 0;
-	errno = 0;
-	f = is_stdin ? stdin : fopen(path, "rb");
+	/* Standard input may be a terminal or a pipe nobody writes to: only
+	 * the scene is read from it. */
+	if (is_stdin && regular)
+		return diag_set(d, RT_E_IO, path, 0, 0,
+				"is standard input, not a file (only a scene may come from a pipe)");
+	f = is_stdin ? stdin : file_open(path, regular, d);
 	if (!f)
-		return diag_set(d, RT_E_IO, path, 0, 0, "cannot open: %s",
-				errno ? strerror(errno) : "out of memory");
+		return -RT_E_IO;
 	rc = file_read_stream(f, name, what, limit, out, out_len, d);
 	if (!is_stdin)
 		fclose(f);
 	return rc;
+}
+
+int file_read_all(const char *path, const char *what, size_t limit,
+		  char **out, size_t *out_len, struct diag *d)
+{
+	return file_read_path(path, what, limit, true, out, out_len, d);
+}
+
+int file_read_any(const char *path, const char *what, size_t limit,
+		  char **out, size_t *out_len, struct diag *d)
+{
+	return file_read_path(path, what, limit, false, out, out_len, d);
 }

@@ -170,7 +170,7 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		if (rc < 0)
 			return tool_usage_error("%s", d.msg);
 		if (rc == 0)
-			return tool_usage_error("unknown option '%s'", argv[optind - 1]);
+			return tool_unknown_option(argv[optind - 1], longopts);
 	}
 	first = optind;
 	if (grade) {

@@ -129,7 +129,7 @@ int merge_main(int argc, char **argv)
 		case ':':
 			return tool_usage_error("option '%s' needs a value", argv[optind - 1]);
 		default:
-			return tool_usage_error("unknown option '%s'", argv[optind - 1]);
+			return tool_unknown_option(argv[optind - 1], longopts);
 		}
 	}
 	if (!output)

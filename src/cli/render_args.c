@@ -1,6 +1,7 @@
 /* Reading a render's command line: the options, their checks against each
  * other, and the output name and format they imply. */
 #define _POSIX_C_SOURCE 200809L
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,6 +27,9 @@ static void usage(FILE *f)
 		"  -j, --threads N        threads for reading the file, building the hierarchy\n"
 		"                         and rendering (default: all %d online cores)\n"
 		"      --stats            print times, ray counts and peak memory on stderr\n"
+		"      --max-rays N       the most rays one primary ray's tree of reflections\n"
+		"                         and glass transmissions may have (default %llu,\n"
+		"                         at least %d); a pixel that needs more is an error\n"
 		"      --progress auto|always|never  progress bar on stderr (auto: when it is\n"
 		"                         a terminal)\n"
 		"      --region X0,Y0,X1,Y1  render only these pixels (0-based, X1 and Y1\n"
@@ -58,7 +62,8 @@ static void usage(FILE *f)
 		"\n"
 		"Exit status: 0 success, 1 scene, input or I/O error, 2 bad command line,\n"
 		"128+N when stopped by signal N (the output is then left untouched).\n",
-		cli_scene_help, cli_default_threads());
+		cli_scene_help, cli_default_threads(), (unsigned long long)RT_DEFAULT_MAX_RAYS,
+		RT_MIN_MAX_RAYS);
 }
 
 /* "X0,Y0,X1,Y1": four integers. */
@@ -192,6 +197,7 @@ static const struct option render_longopts[] = {
 	{ "grid", required_argument, NULL, OPT_GRID },
 	{ "tile", required_argument, NULL, OPT_TILE },
 	{ "list-shapes", no_argument, NULL, OPT_LIST_SHAPES },
+	{ "max-rays", required_argument, NULL, OPT_MAX_RAYS },
 	{ "help", no_argument, NULL, 'h' },
 	{ "version", no_argument, NULL, 'V' },
 	{ NULL, 0, NULL, 0 },
@@ -265,6 +271,14 @@ static int render_option(void *ctx, int c, const char *arg)
 	case OPT_LIST_SHAPES:
 		o->scene.list_shapes = true;
 		return 0;
+	case OPT_MAX_RAYS: {
+		long n;
+
+		if (number_parse_long("--max-rays", arg, RT_MIN_MAX_RAYS, LONG_MAX, &n, &d) < 0)
+			return tool_usage_error("%s", d.msg);
+		o->max_rays = (uint64_t)n;
+		return 0;
+	}
 	case 'h':
 		usage(stdout);
 		exit(0);

@@ -4,6 +4,7 @@
 #define RT_CLI_RENDER_ARGS_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "cli/scene_opts.h"
 #include "whitted/image.h"
@@ -20,6 +21,7 @@ enum {
 	OPT_GRID,
 	OPT_TILE,
 	OPT_LIST_SHAPES,
+	OPT_MAX_RAYS,
 };
 
 #define NAME_MAX_LEN 4096
@@ -43,6 +45,7 @@ struct options {
 	bool numbered;			/* output is a pattern with a frame number */
 	int grid_cols, grid_rows;	/* --grid; 0: none */
 	int tile;			/* --tile K of the grid, 1-based */
+	uint64_t max_rays;		/* --max-rays; 0: the default */
 };
 
 

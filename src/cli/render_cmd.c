@@ -105,6 +105,7 @@ static int render_one(const struct options *o, const struct scene *s, const stru
 	render_job_init(&job, s, cam, o->threads);
 	job.settings.clamp = o->scene.clamp;
 	job.samples = o->scene.samples;
+	job.max_rays = o->max_rays;
 	if (o->region) {
 		job.x0 = o->x0;
 		job.y0 = o->y0;

@@ -455,7 +455,7 @@ int cli_parse_options(int argc, char **argv, const char *shortopts,
 		if (rc < 0)
 			return tool_usage_error("%s", d.msg);
 		if (rc == 0)
-			return tool_usage_error("unknown option '%s'", argv[optind - 1]);
+			return tool_unknown_option(argv[optind - 1], longopts);
 	}
 	if (cli_scene_operand(scene, argc, argv, optind, &scene->path, &d) < 0)
 		return tool_usage_error("%s", d.msg);

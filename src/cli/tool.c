@@ -1,8 +1,11 @@
 /* The programs' shared printing of errors and notes, and their exit codes. */
+#include <getopt.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "cli/suggest.h"
 #include "cli/tool.h"
 
 static const char *name = "whitted";
@@ -27,6 +30,24 @@ int tool_usage_error(const char *fmt, ...)
 	va_end(ap);
 	fprintf(stderr, "\nTry '%s --help' for more information.\n", name);
 	return TOOL_EXIT_USAGE;
+}
+
+int tool_unknown_option(const char *arg, const struct option *longopts)
+{
+	const char *names[128], *hit = NULL;
+	char word[64];
+	size_t n = 0, len = strcspn(arg, "=");
+
+	if (strncmp(arg, "--", 2) == 0 && longopts && len - 2 < sizeof(word)) {
+		memcpy(word, arg + 2, len - 2);
+		word[len - 2] = '\0';
+		for (; longopts[n].name && n < sizeof(names) / sizeof(names[0]); n++)
+			names[n] = longopts[n].name;
+		hit = cli_suggest(word, names, n);
+	}
+	if (hit)
+		return tool_usage_error("unknown option '%s'; did you mean '--%s'?", arg, hit);
+	return tool_usage_error("unknown option '%s'", arg);
 }
 
 void tool_print_diag(const struct diag *d, const char *kind)

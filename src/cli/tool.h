@@ -24,6 +24,12 @@ int tool_usage_error(const char *fmt, ...)
 	__attribute__((format(printf, 1, 2)))
 #endif
 	;
+/* The usage error for an option getopt_long did not know, as it appears
+ * in argv ("--samles", "--samles=3", "-x"): "unknown option '--samles';
+ * did you mean '--samples'?" when one of longopts (getopt's array, ended
+ * by a NULL name) is near (cli/suggest.h).  Returns TOOL_EXIT_USAGE. */
+struct option;
+int tool_unknown_option(const char *arg, const struct option *longopts);
 /* One diagnostic as "FILE:LINE:COL: KIND: MSG" (see diag_format). */
 void tool_print_diag(const struct diag *d, const char *kind);
 /* A diag_note_fn: prints the note unless *(const bool *)quiet is true. */

@@ -19,6 +19,7 @@
 #include "base/alloc.h"
 #include "base/file.h"
 #include "dist/tile_text.h"
+#include "image/png_check.h"
 #include "image/png_idat.h"
 #include "whitted/tile.h"
 
@@ -272,16 +273,26 @@ static int tile_check_head(const char *path, const struct tile_reader *r, struct
 	return 0;
 }
 
-/* tile_read on the file's bytes b[0..n). */
-static int tile_read_bytes(const char *path, const unsigned char *b, size_t n,
-			   struct tile_info *info, struct image *img, struct diag *d)
+int tile_read_memory(const unsigned char *b, size_t n, const char *path, struct tile_info *info,
+		     struct image *img, struct diag *d)
 {
 	struct tile_reader r;
 	struct tile_png p;
 	int rc;
 
+	struct png_facts facts;
+
 	if (n < 8 || png_sig_cmp(b, 0, 8) != 0)
 		return diag_set(d, RT_E_SYNTAX, path, 0, 0, "not a PNG file");
+	/* Before libpng allocates or inflates anything: the CRCs, a size
+	 * within the limit and the file's means, no more data than the
+	 * header's, nothing after IEND. */
+	if ((rc = png_check(b, n, path, RT_MAX_PIXELS, img != NULL, &facts, d)) < 0)
+		return rc;
+	if (facts.end != n)
+		return diag_set(d, RT_E_SYNTAX, path, 0, 0,
+				"junk after the end of the PNG (%zu bytes after its IEND chunk): "
+				"damaged, or not the file whitted wrote", n - facts.end);
 	memset(&r, 0, sizeof(r));
 	r.data = b;
 	r.len = n;
@@ -319,7 +330,7 @@ int tile_read(const char *path, struct tile_info *info, struct image *img, struc
 
 	if (rc < 0)
 		return rc;
-	rc = tile_read_bytes(path, (const unsigned char *)buf, n, info, img, d);
+	rc = tile_read_memory((const unsigned char *)buf, n, path, info, img, d);
 	rt_free(buf);
 	return rc;
 }

@@ -4,6 +4,8 @@
  * its header says: stb reads the missing bytes as zeros) and reads the
  * PNM formats itself (stb has no ASCII P3, and mishandles 16-bit grey). */
 #include <ctype.h>
+#include <math.h>
+#include <stdio.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
@@ -11,9 +13,23 @@
 #include "base/alloc.h"
 #include "base/file.h"
 #include "image/image_read.h"
+#include "image/png_check.h"
 
 /* A submission larger than this is not an image of the course. */
 #define IMAGE_READ_MAX_BYTES ((size_t)1 << 28)
+
+int image_read_over_limit(const char *name, unsigned long long w, unsigned long long h,
+			  unsigned long long max_pixels, struct diag *d)
+{
+	unsigned long long side = (unsigned long long)sqrt((double)max_pixels);
+
+	if (side * side == max_pixels)
+		return diag_set(d, RT_E_RANGE, name, 0, 0,
+				"%llux%llu is over the limit of %llu pixels (%llux%llu)", w, h, max_pixels,
+				side, side);
+	return diag_set(d, RT_E_RANGE, name, 0, 0, "%llux%llu is over the limit of %llu pixels", w,
+			h, max_pixels);
+}
 
 static uint32_t le32(const unsigned char *p)
 {
@@ -52,8 +68,22 @@ static int image_check_bmp(const unsigned char *b, size_t len, const char *name,
 	}
 	if (h < 0)
 		h = -h;
-	if (w <= 0 || h <= 0 || bpp == 0 || bpp > 32 || (comp != 0 && comp != 3))
+	/* Only uncompressed rows are read: stb_image 2.27 decodes a header
+	 * with any other compression as if uncompressed, the missing bytes as
+	 * zeros (a 60-byte file made 1536x4102 pixels). */
+	if (comp == 1 || comp == 2)
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"cannot read the image (an RLE-compressed BMP): save it uncompressed "
+				"(24-bit) or as PNG");
+	if (comp != 0 && comp != 3)
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"cannot read the image (BMP compression %llu, not uncompressed rows): "
+				"it is damaged or of a kind not read", comp);
+	if (w <= 0 || h <= 0 || bpp == 0 || bpp > 32)
 		return 0;	/* stb's own message says what is wrong */
+	if ((unsigned long long)w * (unsigned long long)h > RT_IMAGE_READ_MAX_PIXELS)
+		return image_read_over_limit(name, (unsigned long long)w, (unsigned long long)h,
+					     RT_IMAGE_READ_MAX_PIXELS, d);
 	rowsize = ((bpp * (unsigned long long)w + 31) / 32) * 4;
 	need = off + rowsize * (unsigned long long)h;
 	if (need > len)
@@ -114,8 +144,8 @@ static int pnm_header(const unsigned char *b, size_t len, const char *name, long
 		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
 				"bad PPM header: %ldx%ld pixels, maximum value %ld", v[0], v[1], v[2]);
 	if ((long long)v[0] * v[1] > RT_IMAGE_READ_MAX_PIXELS)
-		return diag_set(d, RT_E_RANGE, name, 0, 0,
-				"the image is %ldx%ld, more than this reader takes", v[0], v[1]);
+		return image_read_over_limit(name, (unsigned long long)v[0], (unsigned long long)v[1],
+					     RT_IMAGE_READ_MAX_PIXELS, d);
 	*end = i;
 	return 0;
 }
@@ -174,9 +204,15 @@ static int image_read_p3(const unsigned char *b, size_t len, const char *name, s
 
 	if (rc < 0)
 		return rc;
+	n = (size_t)v[0] * (size_t)v[1] * 3;
+	/* Each sample is a digit at least, and white space between two:
+	 * checked before the image is allocated. */
+	if (len - end < 2 * n - 1)
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"truncated PPM: its header gives %ldx%ld pixels (%zu samples), the "
+				"file has %zu bytes after the header", v[0], v[1], n, len - end);
 	if ((rc = image_alloc(img, (int)v[0], (int)v[1], d)) < 0)
 		return rc;
-	n = (size_t)v[0] * (size_t)v[1] * 3;
 	for (k = 0; k < n; k++) {
 		s = pnm_number(b, len, &end);
 		if (s < 0 || s > v[2]) {
@@ -235,6 +271,21 @@ static int png_drop_empty_idat(const unsigned char *data, size_t len, unsigned c
 	return 0;
 }
 
+/* The name of an image format that is not read, by its magic bytes, or
+ * NULL. */
+static const char *image_other_format(const unsigned char *b, size_t len)
+{
+	if (len >= 6 && (memcmp(b, "GIF87a", 6) == 0 || memcmp(b, "GIF89a", 6) == 0))
+		return "GIF";
+	if (len >= 12 && memcmp(b, "RIFF", 4) == 0 && memcmp(b + 8, "WEBP", 4) == 0)
+		return "WebP";
+	if (len >= 4 && (memcmp(b, "II*\0", 4) == 0 || memcmp(b, "MM\0*", 4) == 0))
+		return "TIFF";
+	if (len >= 4 && memcmp(b, "qoif", 4) == 0)
+		return "QOI";
+	return NULL;
+}
+
 int image_read_memory(const unsigned char *data, size_t len, const char *name, struct image *img,
 		      enum image_format *format, struct diag *d)
 {
@@ -257,8 +308,21 @@ int image_read_memory(const unsigned char *data, size_t len, const char *name, s
 	} else if (len >= 2 && data[0] == 'P' && data[1] == '3') {
 		return image_read_p3(data, len, name, img, d);
 	} else if (len >= 8 && memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0) {
+		struct png_facts facts;
 		unsigned char *clean;
 		size_t clean_len;
+		/* What stb_image does not check (CRCs, a size within the limit
+		 * and the file's means, data no more than the header's), before
+		 * it allocates anything. */
+		if ((rc = png_check(data, len, name, RT_IMAGE_READ_MAX_PIXELS, true, &facts, d)) < 0) {
+			char why[RT_DIAG_MSG_MAX];
+
+			if (rc != -RT_E_SYNTAX || !d)
+				return rc;
+			snprintf(why, sizeof(why), "%s", d->msg);
+			return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+					"cannot read the image (%s): it is damaged or truncated", why);
+		}
 		if ((rc = png_drop_empty_idat(data, len, &clean, &clean_len, d)) < 0)
 			return rc;
 		if (clean) {
@@ -266,6 +330,14 @@ int image_read_memory(const unsigned char *data, size_t len, const char *name, s
 			rt_free(clean);
 			return rc;
 		}
+	} else if (len >= 3 && data[0] == 0xff && data[1] == 0xd8 && data[2] == 0xff) {
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"a JPEG image, which is not accepted: JPEG is lossy (its pixels are "
+				"not the ones the program computed); save the image as PNG or BMP");
+	} else if (image_other_format(data, len)) {
+		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
+				"a %s image, which is not read: save the image as PNG or BMP",
+				image_other_format(data, len));
 	} else {
 		return diag_set(d, RT_E_SYNTAX, name, 0, 0,
 				"not an image: PNG, BMP or PPM expected (the file starts with "

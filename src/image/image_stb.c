@@ -54,8 +54,8 @@ int image_stb_decode(const unsigned char *data, size_t len, const char *name,
 				"cannot read the image (%s): it is damaged, truncated or of a kind "
 				"not read (PNG, uncompressed BMP, PPM)", stbi_failure_reason());
 	if ((long long)w * h > RT_IMAGE_READ_MAX_PIXELS)
-		return diag_set(d, RT_E_RANGE, name, 0, 0,
-				"the image is %dx%d, more than this reader takes", w, h);
+		return image_read_over_limit(name, (unsigned long long)w, (unsigned long long)h,
+					     RT_IMAGE_READ_MAX_PIXELS, d);
 	px = stbi_load_from_memory(data, (int)len, &w, &h, &comp, 3);
 	if (!px) {
 		const char *why = stbi_failure_reason();

@@ -1,5 +1,6 @@
 /* The plugin loader: checks a .so before running any of its code (a
- * readable file, a shared object, the ABI version it was built for), then
+ * readable regular file, an ELF shared object of this processor whole in
+ * the file (elf_check.c), the ABI version it was built for), then
  * calls its whitted_plugin_init with the host's services and registers
  * what it registers through the registry's one path.  Loading is
  * serialised by one mutex; the plugin being loaded is `loading`, which
@@ -180,6 +181,10 @@ static int plugin_read(const char *path, struct plugin *pl, struct diag *d)
 		return diag_fail(d, RT_E_IO, "plugin %s: %s", path, strerror(errno));
 	if ((rc = file_read_all(path, "plugin", PLUGIN_FILE_MAX, &bytes, &len, d)) < 0)
 		return rc;
+	if ((rc = plugin_elf_check(path, (const unsigned char *)bytes, len, d)) < 0) {
+		rt_free(bytes);
+		return rc;
+	}
 	pl->info.hash = hash_bytes(RT_HASH_INIT, bytes, len);
 	pl->dev = st.st_dev;
 	pl->ino = st.st_ino;

@@ -27,7 +27,8 @@ struct plugin_info {
  * second time is left as it is.  Fails, with a message that names the
  * file, and nothing of the plugin left registered: RT_E_IO when the file is
  * missing or unreadable; RT_E_SYNTAX when it is not a plugin (not a
- * shared object dlopen takes, or without whitted_plugin_abi or
+ * shared object of this processor whose segments lie within the file
+ * (plugin_elf_check, before dlopen), or without whitted_plugin_abi or
  * whitted_plugin_init); RT_E_RANGE when it was built for an ABI version
  * this whitted does not support; RT_E_INVALID when its name or a keyword
  * clashes with a built-in or an earlier plugin's, or its init fails. */
@@ -48,6 +49,12 @@ const struct plugin_info *plugin_at(size_t i);
  * Only those whose path is among paths[0..n) when paths is not NULL (the
  * plugins whose shapes a scene has: see shape_registry_origin). */
 void plugin_records(const char *const *paths, size_t n, char *buf, size_t size);
+/* The checks of a plugin file's bytes before dlopen (elf_check.c): an
+ * ELF shared object of this processor's class, byte order and machine
+ * ("built for aarch64, this is x86-64"), its program headers, loaded
+ * segments and section headers within the file (a truncated copy).
+ * RT_E_SYNTAX naming the file when it fails. */
+int plugin_elf_check(const char *path, const unsigned char *bytes, size_t len, struct diag *d);
 /* The services every plugin's init is given (for the tests: its
  * register_plugin refuses, -RT_E_INVALID, outside a plugin's init). */
 const struct whitted_plugin_host *plugin_host(void);

@@ -1,8 +1,11 @@
 /* The image loop: the job's rectangle cut into 16x16 blocks that threads
- * take from a shared counter, one ray through each pixel's centre, the
- * conversion of colours to bytes, and the word that a band of rows is
- * final (for a writer that works beside the render).  The image does not
- * depend on the number of threads. */
+ * take from a shared counter, one ray through each pixel's centre (a
+ * pixel's rays one tree, ray_tree.h: traced again where what its cut-off
+ * left out could change its bytes), the conversion of colours to bytes,
+ * and the word that a band of rows is final (for a writer that works
+ * beside the render).  The image does not depend on the number of
+ * threads.  A signal stops it within a pixel's RENDER_TREE_CHUNK rays (or
+ * a packet's pixels); a pixel over the budget stops every thread. */
 #include <pthread.h>
 #include <stdbool.h>
 #include <string.h>
@@ -26,6 +29,8 @@ struct render_shared {
 	struct image *img;
 	long next_block;		/* taken with an atomic add */
 	bool packets;		/* render_packets_wanted */
+	int halt;		/* set once, atomically, by the first pixel over the budget */
+	int over_x, over_y;	/* that pixel, written by the thread that set halt */
 	long blocks_done;
 	long *band_left;		/* blocks not yet rendered per band; NULL: no bands */
 	pthread_mutex_t band_lock;	/* over band_left */
@@ -53,9 +58,10 @@ static bool render_cancelled(const struct render_job *job)
 	return job->cancel && *job->cancel;
 }
 
-/* Renders one block of the job's rectangle, clipped to it. */
+/* Renders one block of the job's rectangle, clipped to it; stops early
+ * when the tree stops (its x, y the pixel over the budget). */
 static void render_block(const struct render_job *job, struct image *img, long block,
-			bool packets, struct ray_counts *counts)
+			bool packets, struct render_tree *tree)
 {
 	long blocks_x = (job->x1 - job->x0 + RENDER_BLOCK - 1) / RENDER_BLOCK;
 	int tx0 = job->x0 + (int)(block % blocks_x) * RENDER_BLOCK;
@@ -66,11 +72,11 @@ static void render_block(const struct render_job *job, struct image *img, long b
 	int x, y;
 
 	if (job->samples > 1) {
-		render_block_samples(job, img, tx0, ty0, tx1, ty1, packets, counts);
+		render_block_samples(job, img, tx0, ty0, tx1, ty1, packets, tree);
 		return;
 	}
 	if (packets) {
-		render_block_packets(job, img, tx0, ty0, tx1, ty1, counts);
+		render_block_packets(job, img, tx0, ty0, tx1, ty1, tree);
 		return;
 	}
 	camera_span_init(&span, job->camera, tx0, tx1);
@@ -84,8 +90,16 @@ static void render_block(const struct render_job *job, struct image *img, long b
 		for (x = tx0; x < tx1; x++) {
 			struct color c;
 
-			counts->primary++;
-			c = render_trace(job->scene, &job->settings, &rays[x - tx0], 1, counts);
+			tree->counts->primary++;
+			render_tree_pixel(tree);
+			do
+				c = render_trace_tree(job->scene, &job->settings, &rays[x - tx0], 1, tree);
+			while (render_tree_again(tree, c, 1));
+			if (tree->state != RENDER_TREE_GOING) {
+				tree->x = x;
+				tree->y = y;
+				return;
+			}
 			render_rgb8(c, bytes + (x - tx0) * 3);
 		}
 		/* The row's 48 bytes go out at once: a block's row shares cache
@@ -174,13 +188,28 @@ static void render_take_blocks(struct render_worker *w, bool report)
 	 * lines, and bumping them per ray made two threads barely faster
 	 * than one. */
 	struct ray_counts counts = { 0, 0, 0, 0 };
+	struct render_tree tree;
 
-	while (!render_cancelled(job)) {
+	render_tree_init(&tree, job->scene, &job->settings, job->max_rays, job->cancel, &sh->halt,
+			 &counts);
+	while (render_tree_poll(&tree)) {
 		long t = __atomic_fetch_add(&sh->next_block, 1, __ATOMIC_RELAXED);
 		long done;
 		if (t >= blocks)
 			break;
-		render_block(job, sh->img, t, sh->packets, &counts);
+		render_block(job, sh->img, t, sh->packets, &tree);
+		if (tree.state == RENDER_TREE_OVER) {
+			int none = 0;
+
+			if (__atomic_compare_exchange_n(&sh->halt, &none, 1, false, __ATOMIC_ACQ_REL,
+							__ATOMIC_ACQUIRE)) {
+				sh->over_x = tree.x;
+				sh->over_y = tree.y;
+			}
+			break;
+		}
+		if (tree.state != RENDER_TREE_GOING)
+			break;
 		if (sh->band_left)
 			render_bands_count(sh, t, w->index);
 		done = __atomic_add_fetch(&sh->blocks_done, 1, __ATOMIC_RELAXED);
@@ -223,6 +252,9 @@ int render_image(const struct render_job *job, struct image *img,
 	    job->x0 >= job->x1 || job->y0 >= job->y1 ||
 	    img->width != job->x1 - job->x0 || img->height != job->y1 - job->y0)
 		return diag_fail(d, RT_E_INVALID, "bad render region");
+	if (job->max_rays && job->max_rays < RT_MIN_MAX_RAYS)
+		return diag_fail(d, RT_E_INVALID, "the ray budget must be at least %d, found %llu",
+				 RT_MIN_MAX_RAYS, (unsigned long long)job->max_rays);
 	if (threads < 1)
 		threads = 1;
 	if (threads > RENDER_MAX_THREADS)
@@ -265,6 +297,14 @@ int render_image(const struct render_job *job, struct image *img,
 			counts->refraction += workers[i].counts.refraction;
 		}
 	}
+	if (shared.halt)
+		return diag_fail(d, RT_E_RANGE,
+				 "pixel %d,%d: a ray's tree of reflections and transmissions through "
+				 "glass needs more than %llu rays at recursion %d; --max-rays N allows "
+				 "more, a lower recursion needs fewer",
+				 shared.over_x, shared.over_y,
+				 (unsigned long long)(job->max_rays ? job->max_rays : RT_DEFAULT_MAX_RAYS),
+				 job->settings.recursion);
 	if (render_cancelled(job))
 		return diag_fail(d, RT_E_INTERRUPTED, "interrupted");
 	return 0;

@@ -98,11 +98,15 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
  * `level`, into out's lanes, as render_trace gives them: the nearest hits
  * in one packet, their shadow rays in one packet a light, and their
  * reflections (the mirrors' that are not glass) in one packet more, a
- * level down, each in its hit's lane. */
+ * level down, each in its hit's lane.  Lane i's rays are trees[i]'s, of
+ * weight weight[i] in their pixel (weight NULL: a scene without glass,
+ * whose lanes share trees[0], which cuts nothing). */
 static void shade_packet(const struct render_job *job, const struct ray_packet *r,
-			 uint32_t active, int level, struct ray_counts *counts, struct color *out)
+			 uint32_t active, int level, struct render_tree *trees,
+			 const double *weight, struct color *out)
 {
 	const struct scene *sc = job->scene;
+	struct ray_counts *counts = trees[0].counts;
 	int depth = accel_packets_scatter_pay(sc->accel) ? PACKET_DEPTH : 1;
 	double t_min[ACCEL_PACKET], t[ACCEL_PACKET];
 	const struct shape *hit[ACCEL_PACKET];
@@ -119,14 +123,27 @@ static void shade_packet(const struct render_job *job, const struct ray_packet *
 		t[i] = INFINITY;
 	accel_intersect_lanes(sc->accel, r, active, t_min, t, hit);
 	hit_lanes_fill(r, active, t, hit, &h);
+	/* A reflection the lane's tree will cut is left to the shading, which
+	 * cuts it as a single ray's would (the same rays, the same sum). */
 	if (level < depth)
-		for (m = h.hits; m; m &= m - 1)
-			if (render_reflects(&job->settings, h.hit[__builtin_ctz(m)], level))
-				reflects |= (uint32_t)1 << __builtin_ctz(m);
+		for (m = h.hits; m; m &= m - 1) {
+			i = __builtin_ctz(m);
+			if (render_reflects(&job->settings, h.hit[i], level) &&
+			    !(weight && render_tree_would_cut(&trees[i], sc, &job->settings,
+							     weight[i] * h.hit[i]->mat.kr, level + 1)))
+				reflects |= (uint32_t)1 << i;
+		}
 	render_shadow_packets(sc, &h.pts, h.hits, &shadows);
 	if (reflects) {
+		double bw[ACCEL_PACKET];
+
+		if (weight)
+			for (m = reflects; m; m &= m - 1) {
+				i = __builtin_ctz(m);
+				bw[i] = weight[i] * h.hit[i]->mat.kr;
+			}
 		hit_lanes_bounce(&h, &bounce);
-		shade_packet(job, &bounce, reflects, level + 1, counts, seen);
+		shade_packet(job, &bounce, reflects, level + 1, trees, weight ? bw : NULL, seen);
 	}
 	lean = lean_lanes(job, &h, reflects, seen, level, &sum);
 	if (lean) {
@@ -150,34 +167,49 @@ static void shade_packet(const struct render_job *job, const struct ray_packet *
 		shadows.bit = i;
 		hit_lanes_point(&h, i, &q);
 		ri = ray_packet_get(r, i);
-		out[i] = render_shade_point(sc, &job->settings, &ri, &q, level, counts, &shadows,
-					    reflects >> i & 1 ? &seen[i] : NULL);
+		out[i] = render_shade_point_tree(sc, &job->settings, &ri, &q, level,
+						 &trees[weight ? i : 0], weight ? weight[i] : 1.0,
+						 &shadows, reflects >> i & 1 ? &seen[i] : NULL);
 	}
 }
 
 void render_rays_packets(const struct render_job *job, const struct ray *r, int n,
-			 struct ray_counts *counts, struct color *out)
+			 struct render_tree *tree, struct color *out)
 {
+	struct render_tree shared;
 	struct ray_packet p;
 	int i, k;
 
+	render_tree_unbound(&shared, tree->counts);
 	for (i = 0; i < n; i += ACCEL_PACKET) {
 		int m = n - i < ACCEL_PACKET ? n - i : ACCEL_PACKET;
 
 		/* The lanes past the rays: copies of the first. */
 		for (k = 0; k < ACCEL_PACKET; k++)
 			ray_packet_set(&p, k, &r[i + (k < m ? k : 0)]);
-		shade_packet(job, &p, packet_lanes(m), 1, counts, out + i);
+		shade_packet(job, &p, packet_lanes(m), 1, &shared, NULL, out + i);
 	}
 }
 
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
-			  int x1, int y1, struct ray_counts *counts)
+			  int x1, int y1, struct render_tree *tree)
 {
 	const struct camera *cam = job->camera;
+	const bool glass = job->scene->glass;
+	struct render_tree trees[ACCEL_PACKET];
+	double ones[ACCEL_PACKET];
 	struct camera_span span;
 	int px, py, w = x1 - x0, k;
 
+	/* With glass each lane's pixel a tree of its own, as the thread's
+	 * (a primary ray of weight 1); without, the lanes share one that
+	 * bounds nothing: their rays are chains of mirrors' no longer than
+	 * the recursion level (the cancel flag is polled for each packet). */
+	render_tree_unbound(&trees[0], tree->counts);
+	for (k = 0; glass && k < ACCEL_PACKET; k++) {
+		trees[k] = *tree;
+		ones[k] = 1.0;
+	}
 	camera_span_init(&span, cam, x0, x1);
 	for (py = y0; py < y1; py += PACKET_SIDE) {
 		/* Each row's up * v, as camera_span_rays makes it; then the rays
@@ -211,8 +243,30 @@ void render_block_packets(const struct render_job *job, struct image *img, int x
 					in.uv[k][i] = in.uv[k][0];
 				}
 			camera_lanes(cam, &in, &r);
-			shade_packet(job, &r, packet_lanes(n), 1, counts, c);
-			counts->primary += (uint64_t)n;
+			if (!render_tree_poll(tree))
+				return;
+			for (i = 0; glass && i < n; i++) {
+				render_tree_pixel(&trees[i]);
+				render_tree_ray(&trees[i]);
+			}
+			shade_packet(job, &r, packet_lanes(n), 1, trees, glass ? ones : NULL, c);
+			tree->counts->primary += (uint64_t)n;
+			/* A pixel whose bytes what its tree left out could change
+			 * is traced again alone (the same arithmetic as its
+			 * lane's), with a finer cut (ray_tree.h). */
+			for (i = 0; glass && i < n; i++) {
+				struct ray ri = ray_packet_get(&r, i);
+
+				while (render_tree_again(&trees[i], c[i], 1))
+					c[i] = render_trace_tree(job->scene, &job->settings, &ri, 1,
+								 &trees[i]);
+				if (trees[i].state != RENDER_TREE_GOING) {
+					tree->state = trees[i].state;
+					tree->x = x0 + px + i % cols;
+					tree->y = py + i / cols;
+					return;
+				}
+			}
 			for (y = 0, i = 0; y < rows_n; y++)
 				for (x = px; x < px + cols; x++)
 					render_rgb8(c[i++], bytes[y] + x * 3);

@@ -2,12 +2,14 @@
  * nearest hit (ambient, diffuse and tinted specular light from coloured
  * point lights and spotlights with shadows and falloff, recursive
  * reflection, clamping).  It runs for every ray: it allocates nothing and
- * takes no locks. */
+ * takes no locks.  Each ray carries its weight in the pixel (the product
+ * of kr, kt along its path) for the tree's bound (ray_tree.h). */
 #include <math.h>
 
 #include "accel/accel.h"
 #include "render/glass_stack.h"
 #include "render/light_dirs.h"
+#include "render/ray_tree.h"
 #include "render/shade_hit.h"
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
@@ -48,23 +50,26 @@ static struct color render_light_split(const struct material *m, struct color lc
 }
 
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
-				   const struct ray *r, int level, struct ray_counts *counts,
-				   const struct glass_stack *glass);
+				   const struct ray *r, int level, struct render_tree *tree,
+				   const struct glass_stack *glass, double weight);
 
 /* The transmitted term kt I(P + eps T, T) of glass, one more level, as
- * a reflection is, with the glass the ray is in once through. */
+ * a reflection is, with the glass the ray is in once through (black when
+ * the tree leaves the ray out). */
 static struct color render_transmit(const struct scene *s, const struct render_settings *rs,
 				    struct vec3 p, struct vec3 dir, double kt, double eps,
-				    int level, struct ray_counts *counts,
-				    const struct glass_stack *glass)
+				    int level, struct render_tree *tree,
+				    const struct glass_stack *glass, double weight)
 {
 	struct ray through;
 
+	if (render_tree_cuts(tree, s, rs, weight * kt, level + 1))
+		return color_make(0.0, 0.0, 0.0);
 	through.origin = vec3_add_scaled(p, dir, eps);
 	through.dir = dir;
-	if (counts)
-		counts->refraction++;
-	return color_scale(render_trace_in(s, rs, &through, level + 1, counts, glass), kt);
+	if (tree->counts)
+		tree->counts->refraction++;
+	return color_scale(render_trace_in(s, rs, &through, level + 1, tree, glass, weight * kt), kt);
 }
 
 /* Lights handled together; see render_trace. */
@@ -258,9 +263,23 @@ static struct color render_direct_full(const struct scene *s, const struct mater
 struct color render_trace(const struct scene *s, const struct render_settings *rs,
 			  const struct ray *r, int level, struct ray_counts *counts)
 {
+	struct render_tree tree;
+	struct color c;
+
+	render_tree_init(&tree, s, rs, 0, NULL, NULL, counts);
+	do
+		c = render_trace_tree(s, rs, r, level, &tree);
+	while (render_tree_again(&tree, c, 1));
+	return c;
+}
+
+struct color render_trace_tree(const struct scene *s, const struct render_settings *rs,
+			       const struct ray *r, int level, struct render_tree *tree)
+{
 	static const struct glass_stack outside = { 0, { NULL } };
 
-	return render_trace_in(s, rs, r, level, counts, &outside);
+	render_tree_ray(tree);
+	return render_trace_in(s, rs, r, level, tree, &outside, 1.0);
 }
 
 /* Inline, so that render_trace_in keeps the point in registers as it did
@@ -299,12 +318,13 @@ __attribute__((always_inline))
 #endif
 static inline struct color render_shade_from(const struct scene *s,
 					     const struct render_settings *rs, const struct ray *r,
-					     int level, struct ray_counts *counts,
+					     int level, struct render_tree *tree,
 					     const struct glass_stack *glass,
 					     const struct render_point *hp,
 					     const struct render_shadows *pre,
-					     const struct color *reflected_pre)
+					     const struct color *reflected_pre, double weight)
 {
+	struct ray_counts *counts = tree->counts;
 	const struct shape *hit = hp->hit;
 	const struct material *m = &hit->mat;
 	const struct color *spec;
@@ -328,20 +348,25 @@ static inline struct color render_shade_from(const struct scene *s,
 	if (level < rs->recursion && (m->kr > 0.0 || tir)) {
 		struct ray bounce;
 		struct color reflected;
+		double k = tir ? 1.0 : m->kr;
 
-		if (counts)
-			counts->reflection++;
 		if (reflected_pre && !tir) {
+			if (counts)
+				counts->reflection++;
 			reflected = *reflected_pre;
+		} else if (render_tree_cuts(tree, s, rs, weight * k, level + 1)) {
+			reflected = color_make(0.0, 0.0, 0.0);
 		} else {
+			if (counts)
+				counts->reflection++;
 			render_bounce(hp, &bounce);
-			reflected = render_trace_in(s, rs, &bounce, level + 1, counts, glass);
+			reflected = render_trace_in(s, rs, &bounce, level + 1, tree, glass, weight * k);
 		}
-		c = color_add(c, color_scale(reflected, tir ? 1.0 : m->kr));
+		c = color_add(c, color_scale(reflected, k));
 	}
 	if (level < rs->recursion && m->kt > 0.0 && !tir)
-		c = color_add(c, render_transmit(s, rs, hp->p, through, m->kt, hp->eps, level, counts,
-							       &beyond));
+		c = color_add(c, render_transmit(s, rs, hp->p, through, m->kt, hp->eps, level, tree,
+							       &beyond, weight));
 	return rs->clamp == RT_CLAMP_LEVEL ? render_clamp(c) : c;
 }
 
@@ -351,26 +376,32 @@ __attribute__((always_inline))
 #endif
 static inline struct color render_shade_at(const struct scene *s,
 					   const struct render_settings *rs, const struct ray *r,
-					   int level, struct ray_counts *counts,
+					   int level, struct render_tree *tree,
 					   const struct glass_stack *glass, double t,
-					   const struct shape *hit, const struct render_shadows *pre)
+					   const struct shape *hit, const struct render_shadows *pre,
+					   double weight)
 {
 	struct render_point h;
 
 	render_point_in(r, t, hit, &h);
-	return render_shade_from(s, rs, r, level, counts, glass, &h, pre, NULL);
+	return render_shade_from(s, rs, r, level, tree, glass, &h, pre, NULL, weight);
 }
 
+/* A ray the tree no longer takes (the trace is stopping) sees black: the
+ * pixel is thrown away. */
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
-				   const struct ray *r, int level, struct ray_counts *counts,
-				   const struct glass_stack *glass)
+				   const struct ray *r, int level, struct render_tree *tree,
+				   const struct glass_stack *glass, double weight)
 {
 	double t = INFINITY;
-	const struct shape *hit = accel_intersect(s->accel, r, render_offset(r->origin), &t);
+	const struct shape *hit;
 
+	if (!render_tree_take(tree))
+		return color_make(0.0, 0.0, 0.0);
+	hit = accel_intersect(s->accel, r, render_offset(r->origin), &t);
 	if (!hit)
 		return color_make(0.0, 0.0, 0.0);
-	return render_shade_at(s, rs, r, level, counts, glass, t, hit, NULL);
+	return render_shade_at(s, rs, r, level, tree, glass, t, hit, NULL, weight);
 }
 
 void render_point_at(const struct ray *r, double t, const struct shape *hit,
@@ -384,7 +415,18 @@ struct color render_shade_point(const struct scene *s, const struct render_setti
 				struct ray_counts *counts, const struct render_shadows *pre,
 				const struct color *reflected)
 {
+	struct render_tree tree;
+
+	render_tree_unbound(&tree, counts);
+	return render_shade_point_tree(s, rs, r, h, level, &tree, 1.0, pre, reflected);
+}
+
+struct color render_shade_point_tree(const struct scene *s, const struct render_settings *rs,
+				     const struct ray *r, const struct render_point *h, int level,
+				     struct render_tree *tree, double weight,
+				     const struct render_shadows *pre, const struct color *reflected)
+{
 	static const struct glass_stack outside = { 0, { NULL } };
 
-	return render_shade_from(s, rs, r, level, counts, &outside, h, pre, reflected);
+	return render_shade_from(s, rs, r, level, tree, &outside, h, pre, reflected, weight);
 }

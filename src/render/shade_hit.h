@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "render/light_dirs.h"
+#include "render/ray_tree.h"
 #include "whitted/render.h"
 #include "whitted/shape.h"
 #include "whitted/vec3.h"
@@ -68,7 +69,16 @@ static inline bool render_reflects(const struct render_settings *rs, const struc
 /* The colour render_trace gives ray r at `level` (outside any glass)
  * whose nearest hit is h, with the shadow answers of pre (NULL: each
  * traced here) and, where render_reflects, the colour its reflection
- * (render_bounce) sees, from the caller (NULL: traced here). */
+ * (render_bounce) sees, from the caller (NULL: traced here).  The rays it
+ * traces are tree's (ray_tree.h), r being of that weight in its pixel
+ * (the product of the coefficients along its path). */
+struct color render_shade_point_tree(const struct scene *s, const struct render_settings *rs,
+				     const struct ray *r, const struct render_point *h, int level,
+				     struct render_tree *tree, double weight,
+				     const struct render_shadows *pre, const struct color *reflected);
+/* render_shade_point_tree with a tree that cuts nothing and no budget:
+ * for a scene without glass, whose rays are a chain no longer than the
+ * recursion level (the tests' entry). */
 struct color render_shade_point(const struct scene *s, const struct render_settings *rs,
 				const struct ray *r, const struct render_point *h, int level,
 				struct ray_counts *counts, const struct render_shadows *pre,

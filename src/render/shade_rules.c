@@ -2,12 +2,14 @@
  * each rule of shade_rules.h breakable: the renders `whitted compare` needs
  * to name a student's mistake.  It repeats shade.c's formulas operation for
  * operation (so that an unbroken rule gives the same bits) rather than
- * adding tests to the per-ray path of every render. */
+ * adding tests to the per-ray path of every render; its ray tree is bound
+ * as render_trace's (ray_tree.h), ray for ray. */
 #include <math.h>
 #include <string.h>
 
 #include "accel/accel.h"
 #include "render/glass_stack.h"
+#include "render/ray_tree.h"
 #include "render/shade_math.h"
 #include "render/shade_rules.h"
 #include "scene/scene_impl.h"
@@ -93,7 +95,8 @@ static double rules_wrap(double v)
 
 static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
 				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
-				   int level, const struct glass_stack *glass);
+				   int level, struct render_tree *tree, const struct glass_stack *glass,
+				   double weight);
 
 struct color shade_rules_trace(const struct scene *s, const struct render_settings *rs,
 			       unsigned rules, const struct ray *r, int level)
@@ -106,8 +109,15 @@ struct color shade_rules_trace_floor(const struct scene *s, const struct render_
 				     const struct ray *r, int level)
 {
 	static const struct glass_stack outside = { 0, { NULL } };
+	struct render_tree tree;
+	struct color c;
 
-	return rules_trace_in(s, rs, rules, fl, r, level, &outside);
+	render_tree_init(&tree, s, rs, 0, NULL, NULL, NULL);
+	do {
+		render_tree_ray(&tree);
+		c = rules_trace_in(s, rs, rules, fl, r, level, &tree, &outside, 1.0);
+	} while (render_tree_again(&tree, c, 1));
+	return c;
 }
 
 /* Whether the other floor fl covers the point p of the plane z = 0. */
@@ -146,10 +156,11 @@ static const struct shape *rules_intersect(const struct scene *s, const struct s
 /* shade.c's render_trace_in, with the rules. */
 static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
 				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
-				   int level, const struct glass_stack *glass)
+				   int level, struct render_tree *tree, const struct glass_stack *glass,
+				   double weight)
 {
 	double t = INFINITY, eps = render_offset(r->origin);
-	const struct shape *hit = rules_intersect(s, fl, r, eps, &t);
+	const struct shape *hit;
 	const struct material *m;
 	struct vec3 p, n, refl, through = { 0.0, 0.0, 0.0 };
 	struct color base, c, spec_color;
@@ -158,6 +169,9 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 	double dn, start;
 	struct glass_stack beyond;
 
+	if (!render_tree_take(tree))
+		return color_make(0.0, 0.0, 0.0);
+	hit = rules_intersect(s, fl, r, eps, &t);
 	if (!hit)
 		return color_make(0.0, 0.0, 0.0);
 	m = &hit->mat;
@@ -198,19 +212,23 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 	}
 	if (level < rs->recursion && (m->kr > 0.0 || tir)) {
 		struct ray bounce;
+		double k = tir ? 1.0 : m->kr;
+		struct color seen = color_make(0.0, 0.0, 0.0);
 
 		bounce.origin = vec3_add_scaled(p, refl, start);
 		bounce.dir = refl;
-		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, fl, &bounce, level + 1, glass),
-					     tir ? 1.0 : m->kr));
+		if (!render_tree_cuts(tree, s, rs, weight * k, level + 1))
+			seen = rules_trace_in(s, rs, rules, fl, &bounce, level + 1, tree, glass, weight * k);
+		c = color_add(c, color_scale(seen, k));
 	}
-	if (level < rs->recursion && m->kt > 0.0 && !tir) {
+	if (level < rs->recursion && m->kt > 0.0 && !tir &&
+	    !render_tree_cuts(tree, s, rs, weight * m->kt, level + 1)) {
 		struct ray ray_through;
 
 		ray_through.origin = vec3_add_scaled(p, through, eps);
 		ray_through.dir = through;
 		c = color_add(c, color_scale(rules_trace_in(s, rs, rules, fl, &ray_through, level + 1,
-							    &beyond),
+							    tree, &beyond, weight * m->kt),
 					     m->kt));
 	}
 	if (rules & RT_RULE_NEVER_CLAMP) {

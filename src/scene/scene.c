@@ -235,8 +235,31 @@ const char *scene_dialect_name(enum scene_dialect d)
 	return NULL;
 }
 
+/* The figures of the ray tree's bound (scene_impl.h). */
+static void scene_tree_bound(struct scene *s)
+{
+	double lights = 0.0;
+	size_t i;
+
+	for (i = 0; i < s->n_lights; i++) {
+		const struct color *c = &s->lights[i].color;
+		lights += fmax(c->r, fmax(c->g, c->b));
+	}
+	s->glass = false;
+	s->tree_emit = s->tree_gain = 0.0;
+	for (i = 0; i < s->n_shapes; i++) {
+		const struct material *m = &s->shapes[i]->mat;
+		double gain = m->kt > 0.0 ? fmax(m->kr + m->kt, 1.0) : m->kr;
+
+		s->glass |= m->kt > 0.0;
+		s->tree_emit = fmax(s->tree_emit, m->ka + (m->kd + m->ks) * lights);
+		s->tree_gain = fmax(s->tree_gain, gain);
+	}
+}
+
 int scene_prepare(struct scene *s, int threads, struct diag *d)
 {
+	scene_tree_bound(s);
 	accel_destroy(s->accel);
 	s->accel = NULL;
 	return accel_build(s->shapes, s->n_shapes, threads, &s->accel, d);

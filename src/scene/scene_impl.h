@@ -24,6 +24,13 @@ struct scene {
 	uint64_t source_hash;
 	uint64_t floor_texture_hash;	/* of the floor's textures' pixels; 0: none */
 	const struct shape *floor;	/* scene_add_view_floor's, or NULL */
+	/* Filled by scene_prepare for the ray tree's bound (render/ray_tree.h):
+	 * whether an object transmits (kt > 0: its hits spawn two rays), the
+	 * most a hit adds by itself, ka + (kd + ks) * the lights' brightest
+	 * channels summed, and the most its rays' colours are multiplied by,
+	 * kr + kt (at least 1 for glass: total internal reflection). */
+	bool glass;
+	double tree_emit, tree_gain;
 };
 
 #endif

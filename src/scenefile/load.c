@@ -15,7 +15,7 @@ int scene_load(const char *path, const struct scene_read_options *opt,
 	int rc;
 
 	*out = NULL;
-	rc = file_read_all(path, "scene file", RT_MAX_SCENE_BYTES, &text, &len, d);
+	rc = file_read_any(path, "scene file", RT_MAX_SCENE_BYTES, &text, &len, d);
 	if (rc < 0)
 		return rc;
 	rc = scene_parse(name, text, len, opt, note, note_ctx, out, d);

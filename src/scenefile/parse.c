@@ -11,6 +11,7 @@
 #include "base/alloc.h"
 #include "base/hash.h"
 #include "scenefile/parse_private.h"
+#include "shapes/registry.h"
 #include "whitted/scenefile.h"
 
 const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_t len,
@@ -34,6 +35,67 @@ const struct shape_ops *parse_find_ops(struct parser *p, const char *text, size_
 		m->dialects = dialects;
 	}
 	return ops;
+}
+
+/* Who made a table, for the messages about its parse: "the plugin
+ * FILE" or "whitted (built in)". */
+static void parse_table_origin(const struct shape_ops *ops, char *buf, size_t size)
+{
+	const char *origin = shape_registry_origin(ops);
+
+	if (origin)
+		snprintf(buf, size, "the plugin %s", origin);
+	else
+		snprintf(buf, size, "whitted (built in)");
+}
+
+/* ops->parse, its answer checked: a plugin's parse that returns a
+ * positive number, 0 without a shape or a shape of another table, or
+ * fails without a message, is the plugin's error, located at the
+ * object's keyword kw.  Never a crash, and the status is one of a
+ * parse's (RT_E_SYNTAX, RT_E_RANGE, RT_E_NOMEM). */
+static int parse_shape_checked(struct parser *p, const struct shape_ops *ops,
+			       const struct token *kw, struct shape **out)
+{
+	char who[RT_DIAG_FILE_MAX + 32];
+	int rc;
+
+	/* Only the message, which tells whether the parse gave one: the whole
+	 * record is 4.6 KB, and a big file has millions of objects. */
+	if (p->d)
+		p->d->msg[0] = '\0';
+	rc = ops->parse(p, out);
+	if (rc < 0) {
+		*out = NULL;
+		if (rc != -RT_E_SYNTAX && rc != -RT_E_RANGE && rc != -RT_E_NOMEM)
+			rc = -RT_E_SYNTAX;
+		if (!p->d || p->d->msg[0])
+			return rc;
+		parse_table_origin(ops, who, sizeof(who));
+		return diag_set(p->d, (enum rt_err)-rc, p->name, kw->line, kw->col,
+				"object '%s' of %s: its parse failed without a message "
+				"(it returned an error without calling host->fail)",
+				ops->keyword, who);
+	}
+	if (rc == 0 && *out && (*out)->ops == ops)
+		return 0;
+	parse_table_origin(ops, who, sizeof(who));
+	if (rc > 0) {
+		*out = NULL;
+		return diag_set(p->d, RT_E_SYNTAX, p->name, kw->line, kw->col,
+				"object '%s' of %s: its parse returned %d, which is neither 0 "
+				"(a shape) nor a negative error", ops->keyword, who, rc);
+	}
+	if (!*out)
+		return diag_set(p->d, RT_E_SYNTAX, p->name, kw->line, kw->col,
+				"object '%s' of %s: its parse returned 0 (success) without a shape",
+				ops->keyword, who);
+	/* Made by this parse, so its table's destroy is the one to free it. */
+	ops->destroy(*out);
+	*out = NULL;
+	return diag_set(p->d, RT_E_SYNTAX, p->name, kw->line, kw->col,
+			"object '%s' of %s: its parse returned a shape whose table is not "
+			"'%s''s own", ops->keyword, who, ops->keyword);
 }
 
 int parse_shape(struct parser *p, struct shape **out, int *line, long index, long count)
@@ -67,7 +129,7 @@ int parse_shape(struct parser *p, struct shape **out, int *line, long index, lon
 				   "format: a student extension needs a plugin that provides it)",
 				   found, shape_keywords_in(p->dialects));
 	}
-	return ops->parse(p, out);
+	return parse_shape_checked(p, ops, &kw, out);
 }
 
 void parser_note_degenerate(struct parser *p, const struct shape *sh, int line, long index)
@@ -243,8 +305,8 @@ int parse_end(struct parser *p, const char *section)
 }
 
 /* Whether the header of the nearfar dialect starts the text: 11 numbers
- * before the first word (scene-format.md, "The dialects", rule 1).  Their
- * third must not be 0: in classic's layout that is an object count of 0
+ * before the first word (scene-format.md, "The dialects", rule 1), nan and
+ * inf counted as numbers.  Their third must not be 0: in classic's layout that is an object count of 0
  * (the only way a classic file has no word that soon: "4 64 0 1 ... 0
  * explanation" is a spot file), and nearfar's FOVY cannot be 0. */
 static bool parse_looks_nearfar(const struct parser *p)
@@ -254,7 +316,9 @@ static bool parse_looks_nearfar(const struct parser *p)
 	struct token t;
 	double third;
 
-	if (!parse_number_ahead(p, 2, &third) || third == 0.0)
+	/* Only a finite 0 rules it out: a header with nan or inf in it is
+	 * still nearfar's, whose parser then names the field. */
+	if (parse_number_ahead(p, 2, &third) && third == 0.0)
 		return false;
 	for (;;) {
 		t = lexer_next(&ahead);
@@ -310,6 +374,35 @@ static int parse_scene(struct parser *p, struct scene *s, int threads, enum scen
 	return rc;
 }
 
+/* After a forced dialect's error: what auto-detection reads the text as,
+ * added to the message when it reads it whole as another dialect (a spot
+ * file read with --dialect classic fails on its spotlights, which the
+ * auto-detected spot dialect reads). */
+static void parse_say_auto(const char *name, const char *text, size_t len,
+			   const struct scene_read_options *opt, struct diag *d)
+{
+	struct scene_read_options o = *opt;
+	struct scene *s = NULL;
+	struct diag scratch;
+	enum scene_dialect found;
+	size_t n;
+
+	if (!d)
+		return;
+	o.dialect = RT_DIALECT_AUTO;
+	o.hash = false;
+	if (scene_parse(name, text, len, &o, NULL, NULL, &s, &scratch) < 0)
+		return;
+	found = scene_view_of(s)->dialect;
+	scene_destroy(s);
+	if (found == opt->dialect)
+		return;
+	n = strlen(d->msg);
+	snprintf(d->msg + n, sizeof(d->msg) - n,
+		 "; auto-detection (no --dialect %s) reads it without error as the %s dialect",
+		 scene_dialect_name(opt->dialect), scene_dialect_name(found));
+}
+
 int scene_parse(const char *name, const char *text, size_t len,
 		const struct scene_read_options *opt, diag_note_fn *note, void *note_ctx,
 		struct scene **out, struct diag *d)
@@ -344,6 +437,8 @@ int scene_parse(const char *name, const char *text, size_t len,
 		scene_set_source_hash(s, hash_finish(&hash));
 	if (rc < 0) {
 		scene_destroy(s);
+		if (opt && opt->dialect != RT_DIALECT_AUTO)
+			parse_say_auto(name, text, len, opt, d);
 		return rc;
 	}
 	*out = s;

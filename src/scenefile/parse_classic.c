@@ -117,9 +117,14 @@ static int parse_end_spot_hint(struct parser *p)
 		return rc;
 	if (k >= 1 && k == floor(k) && k <= RT_MAX_LIGHTS) {
 		len = strlen(p->d->msg);
-		snprintf(p->d->msg + len, sizeof(p->d->msg) - len,
-			 "; as a spotlight section, a count of %ld would need %ld numbers after it, "
-			 "and %ld follow", (long)k, 10 * (long)k, n - 1);
+		if (n - 1 == 10 * (long)k)
+			snprintf(p->d->msg + len, sizeof(p->d->msg) - len,
+				 "; they are a whole spotlight section (a count of %ld and %ld "
+				 "numbers), which only the spot dialect has", (long)k, n - 1);
+		else
+			snprintf(p->d->msg + len, sizeof(p->d->msg) - len,
+				 "; as a spotlight section, a count of %ld would need %ld numbers "
+				 "after it, and %ld follow", (long)k, 10 * (long)k, n - 1);
 	}
 	return rc;
 }

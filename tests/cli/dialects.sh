@@ -94,10 +94,19 @@ check "a spot file as classic: exit 1" [ "$rc" -eq 1 ]
 check "a spot file as classic: the spotlight count is where the data should end" \
 	grep -qF "expected the end of the data after the last light, found the number" "$T/err"
 check "a spot file as classic: nothing written" wd_empty
+# ... and says what the numbers are and what auto-detection reads, rather
+# than that a count of N would need 10 N numbers when 10 N follow.
+check "a spot file as classic: a whole spotlight section" \
+	grep -qE "they are a whole spotlight section \(a count of [0-9]+ and [0-9]+ numbers\), which only the spot dialect has" "$T/err"
+check "a spot file as classic: what auto-detection reads" \
+	grep -qF "; auto-detection (no --dialect classic) reads it without error as the spot dialect" "$T/err"
+check "a spot file as classic: no 'would need'" bash -c "! grep -q 'would need' '$T/err'"
 clean_wd
 run -s 24 -o out.png --dialect nearfar "$RS/ajakil.txt"
 check "a classic file as nearfar: exit 1" [ "$rc" -eq 1 ]
 check "a classic file as nearfar: located" grep -qE 'ajakil.txt:[0-9]+:[0-9]+: error: ' "$T/err"
+check "a classic file as nearfar: what auto-detection reads" \
+	grep -qF "; auto-detection (no --dialect nearfar) reads it without error as the classic dialect" "$T/err"
 clean_wd
 run -s 24 -o out.png --dialect pyramid "$CF/ishtiaqniloy.txt"
 check "forced pyramid renders" [ "$rc" -eq 0 ]
@@ -106,6 +115,14 @@ run -s 24 -o out.png --dialect classic "$CF/ishtiaqniloy.txt"
 check "a pyramid file as classic: exit 1" [ "$rc" -eq 1 ]
 check "a pyramid file as classic: the keyword is not classic's" \
 	grep -qF "unknown object 'pyramid' in the classic dialect" "$T/err"
+check "a pyramid file as classic: what auto-detection reads" \
+	grep -qF "reads it without error as the pyramid dialect" "$T/err"
+# A forced dialect's error on a file that auto-detection cannot read either
+# says nothing of it.
+clean_wd
+run -s 24 -o out.png --dialect classic "$ROOT/tests/errors/nearfar-nan-fovy.txt"
+check "a broken file as classic: exit 1" [ "$rc" -eq 1 ]
+check "a broken file as classic: no auto-detection clause" bash -c "! grep -q 'auto-detection' '$T/err'"
 clean_wd
 run -s 24 -o out.png --dialect bogus "$RS/ajakil.txt"
 check "--dialect bogus: exit 2" [ "$rc" -eq 2 ]

@@ -1,7 +1,10 @@
 #!/bin/bash
 # Output faults: a missing directory, a directory that is a file, a
 # read-only directory, a file-size limit that stops the write half way, a
-# full device, and SIGINT or SIGTERM during a render.  Each must exit
+# full device, and SIGINT or SIGTERM during a render (also inside one
+# pixel's endless tree of glass rays).  Inputs that are not files (a named
+# pipe with no writer, a device, a socket) where a file is expected: refused
+# at once, where a scene may come from a pipe.  Each must exit
 # non-zero with one message, leave neither the output nor a temporary file
 # (.NAME.XXXXXX) behind, and leave an existing output file byte for byte as
 # it was.
@@ -214,5 +217,136 @@ rc=$?
 check "TERM while opening a FIFO exit 143" [ "$rc" -eq 143 ]
 check "TERM while opening a FIFO one message" [ "$(err_lines)" -eq 1 ]
 check "TERM while opening a FIFO fifo kept" [ -p "$T/ff/out.ppm" ]
+
+# One pixel (11,10 of 32x32, where a ray bounces between the spheres)
+# whose tree of glass rays has no end within any time (kr 1 and kt 0.9 in
+# two facing spheres, recursion 256, a budget of 10^12 rays):
+# the signal is seen inside the pixel, within a second.
+cat >"$T/tree.txt" <<'EOF2'
+256
+32
+
+2
+sphere
+-31 0 30
+30
+0.9 0.9 1.0
+0.1 0.3 0.3 1.0
+8
+
+sphere
+31 0 30
+30
+0.9 0.9 1.0
+0.1 0.3 0.3 1.0
+8
+
+1
+-100 -150 200
+1 1 1
+EOF2
+for sig in INT TERM; do
+	rm -rf "$T/sig" && mkdir -p "$T/sig"
+	(cd "$T/sig" && exec "$W" -q --max-rays 1000000000000 --glass 1:1.5:0.9,2:1.5:0.9 \
+		--region 11,10,12,11 -o one.png "$T/tree.txt") >"$T/out" 2>"$T/err" &
+	pid=$!
+	sleep 0.5
+	kill -s $sig $pid
+	t0=$(date +%s%N)
+	wait $pid
+	rc=$?
+	ms=$((($(date +%s%N) - t0) / 1000000))
+	want=$([ $sig = INT ] && echo 130 || echo 143)
+	check "$sig inside one pixel's tree: exit $want, not $rc" [ "$rc" -eq "$want" ]
+	check "$sig inside one pixel's tree: over within a second ($ms ms)" [ "$ms" -lt 1000 ]
+	check "$sig inside one pixel's tree: nothing left ($(ls -A "$T/sig"))" [ -z "$(ls -A "$T/sig")" ]
+done
+# Without the large budget the same pixel is refused, naming it.
+clean_wd
+run -q --glass 1:1.5:0.9,2:1.5:0.9 --region 11,10,12,11 --max-rays 100000 -o one.png "$T/tree.txt"
+check "a tree over --max-rays: exit 1" [ "$rc" -eq 1 ]
+check "a tree over --max-rays: the message" grep -q "^whitted: error: pixel 11,10: a ray's tree of reflections and transmissions through glass needs more than 100000 rays at recursion 256; --max-rays N allows more" "$T/err"
+check "a tree over --max-rays: nothing left" wd_empty
+run -q --max-rays 255 "$SCENE"
+check "--max-rays below 256 is a usage error" [ "$rc" -eq 2 ]
+
+# Inputs that are not files: a named pipe nobody writes to (which would
+# block the open), a character device and a socket, wherever whitted reads
+# a file other than the scene.  Each is refused at once (exit 1, one
+# message that says what it is), nothing written.
+rm -rf "$T/nf" && mkdir -p "$T/nf"
+mkfifo "$T/nf/fifo.png"
+python3 -c 'import socket,sys; socket.socket(socket.AF_UNIX).bind(sys.argv[1])' "$T/nf/sock.png" 2>/dev/null
+"$W" -q -s 4 -o "$T/nf/four.png" "$SCENE"
+# not_a_file NAME PATTERN COMMAND...: COMMAND in $T/nf within 5 s exits 1
+# with PATTERN (a grep pattern) on stderr, and writes nothing.
+not_a_file() {
+	local name=$1 pattern=$2
+	shift 2
+	(cd "$T/nf" && exec timeout -s KILL 5 "$@") >"$T/out" 2>"$T/err"
+	rc=$?
+	if [ "$rc" -ne 1 ]; then bad "$name" "exit $rc, expected 1: $(head -c 300 "$T/err")"
+	elif ! grep -q -- "$pattern" "$T/err"; then bad "$name" "stderr lacks '$pattern': $(head -c 300 "$T/err")"
+	elif ls "$T/nf" | grep -qv -e '^fifo.png$' -e '^sock.png$' -e '^four.png$'; then
+		bad "$name" "left: $(ls -A "$T/nf")"
+	else ok
+	fi
+}
+for in in "fifo.png:is a named pipe, not a file" "/dev/zero:is a character device, not a file"; do
+	f=${in%%:*} why=${in#*:}
+	not_a_file "texture $f" "$f: $why" "$W" -q -s 8 --floor-texture "$f" -o out.png "$SCENE"
+	not_a_file "compared image $f" "$f: $why" "$W" compare -s 4 "$SCENE" "$f"
+	not_a_file "merged tile $f" "$f: $why" "$W" merge -o out.png "$f"
+	not_a_file "plugin $f" "$f: $why" "$W" -q -s 8 --plugin "$f" -o out.png "$SCENE"
+	not_a_file "--path $f" "$f: $why" "$W" -q -s 8 --frames 2 --path "$f" -o out%04d.png "$SCENE"
+	not_a_file "scene2pov texture $f" "$f: $why" "$ROOT/build/scene2pov" -q --floor-texture "$f" -o out.pov "$SCENE"
+done
+# "-" (standard input, maybe a terminal) is only the scene's.
+not_a_file "texture -" "-: is standard input, not a file" "$W" -q -s 8 --floor-texture - -o out.png "$SCENE"
+not_a_file "compared image -" "-: is standard input, not a file" "$W" compare -s 4 "$SCENE" -
+if [ -S "$T/nf/sock.png" ]; then
+	not_a_file "texture socket" "sock.png: is a socket, not a file" \
+		"$W" -q -s 8 --floor-texture sock.png -o out.png "$SCENE"
+else
+	bad "texture socket" "NOT RUN: no socket could be made (python3)"
+fi
+# grade names the unreadable image in its table and goes on.
+(cd "$T/nf" && timeout -s KILL 5 "$W" grade -s 4 --scene "$SCENE" fifo.png four.png) >"$T/out" 2>"$T/err"
+rc=$?
+check "grade: a FIFO is unreadable, not waited on (exit $rc)" [ "$rc" -ne 137 ]
+check "grade: the FIFO's row says why" grep -q 'is a named pipe, not a file' "$T/out"
+# Hostile images (tests/tools/hostile_png.py), as a texture and as the
+# compared image: image data that inflates far past the header's 16x16
+# (64 MiB, or the right rows and 8 MiB more), too little data, damaged
+# CRCs (critical and ancillary chunks), sizes over the limit (named), a
+# small file claiming 16384x16384, a cut file, no IEND, a JPEG.  Each is
+# refused with its message in little memory (ulimit -v: far below what
+# inflating a bomb took) and time, nothing written.
+python3 "$ROOT/tests/tools/hostile_png.py" "$T/hp" >/dev/null
+for c in "bomb.png:too much image data: the header's 16x16 needs 784 bytes, the data inflates to more" \
+	"bomb-tail.png:too much image data: the header's 16x16 needs 784 bytes" \
+	"short-data.png:not enough image data: the header's 16x16 needs 784 bytes, the data ends after 392" \
+	"bad-crc.png:damaged PNG file (bad CRC in its IDAT chunk)" \
+	"bad-crc-text.png:damaged PNG file (bad CRC in its tEXt chunk)" \
+	"huge-65535.png:65535x65535 is over the limit of 67108864 pixels (8192x8192)" \
+	"huge-wide.png:2147483647x1 is over the limit of 67108864 pixels (8192x8192)" \
+	"huge-30000.png:30000x30000 is over the limit of 67108864 pixels (8192x8192)" \
+	"claims-16384.png:16384x16384 is over the limit" \
+	"truncated.png:truncated PNG file: a chunk cut short" \
+	"no-iend.png:truncated PNG file: it ends without an IEND chunk" \
+	"jpeg.jpg:a JPEG image, which is not accepted: JPEG is lossy (its pixels are not the ones the program computed); save the image as PNG or BMP"; do
+	f=${c%%:*} m=${c#*:}
+	not_a_file "texture $f" "$f: .*$m" sh -c 'ulimit -v 262144; exec "$@"' sh \
+		"$W" -q -s 8 --floor-texture "$T/hp/$f" -o out.png "$SCENE"
+	not_a_file "compared $f" "$f: .*$m" sh -c 'ulimit -v 262144; exec "$@"' sh \
+		"$W" compare -q -s 4 "$SCENE" "$T/hp/$f"
+done
+
+# The scene itself may be a pipe: read to its end.
+clean_wd
+mkfifo "$T/wd/scene.fifo"
+(cat "$SCENE" >"$T/wd/scene.fifo" &)
+run -q -s 8 -o from-fifo.png scene.fifo
+check "a scene from a named pipe renders" [ "$rc" -eq 0 -a -s "$T/wd/from-fifo.png" ]
 
 finish

@@ -148,6 +148,85 @@ if command -v valgrind >/dev/null 2>&1; then
 else
 	bad "valgrind on a refused plugin" "NOT RUN: valgrind is not installed (make deps)"
 fi
+# A plugin cut short (the first 600 bytes of a good one: an interrupted
+# copy), which dlopen would map and die of with SIGBUS, and one of another
+# processor: refused before dlopen, by every tool.
+head -c 600 "$P/torus.so" >cut.so
+cp "$P/torus.so" foreign.so
+if [ "$(uname -m)" = x86_64 ]; then
+	printf '\267\000' | dd of=foreign.so bs=1 seek=18 conv=notrunc 2>/dev/null
+	foreign="built for aarch64, this is x86-64"
+else
+	printf '\076\000' | dd of=foreign.so bs=1 seek=18 conv=notrunc 2>/dev/null
+	foreign="built for x86-64, this is"
+fi
+for tool in whitted scene2pov whitted-view merge; do
+	case $tool in
+	whitted) run=("$W" -s 16 -o out.png) ;;
+	scene2pov) run=("$S2P" -o out.pov) ;;
+	whitted-view) [ -x "$VIEW" ] || continue; run=("$VIEW") ;;
+	merge) run=("$W" merge -o out.png) ;;
+	esac
+	expect_fail "$tool cut short" "plugin cut.so: not a plugin: the file is cut short (a segment reaches byte" \
+		"${run[@]}" --plugin cut.so torus.txt
+	expect_fail "$tool another processor" "plugin foreign.so: $foreign" \
+		"${run[@]}" --plugin foreign.so torus.txt
+done
+# The loader's test compiles without -Wformat-truncation's warning however
+# deep the checkout (its expected message was a fixed buffer).
+deep=$(printf '/a-rather-deep-checkout%.0s' $(seq 12))/build/plugins
+"$CC" -std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -I"$ROOT/include" -I"$ROOT/src" -I"$ROOT/tests/unit" \
+	-DRT_TEST_PLUGIN_DIR="\"$deep\"" -c -o test_loader.o "$ROOT/tests/unit/plugin/test_loader.c" 2>cc.log
+check "test_loader.c in a deep checkout: no warning ($(head -c 300 cc.log))" [ $? -eq 0 -a ! -s cc.log ]
+
+# Plugins whose methods break their contract (tests/plugins/hostile.c):
+# each is the plugin's error, located at the object's keyword for parse,
+# exit 1, nothing written, and never a crash.
+printf '1\n16\n\n1\nblob\n0 0 20\n0.9 0.2 0.2\n0.1 0.5 0.4 0.0\n10\n\n1\n-100 -150 200\n1 1 1\n' >blob.txt
+for v in NONE PARSE_ZERO PARSE_POSITIVE PARSE_SILENT PARSE_ODD_ERROR PARSE_ALIEN EXPORT_POSITIVE \
+	EXPORT_SILENT TESS_POSITIVE; do
+	build hostile_$v.so -D$v "$ROOT/tests/plugins/hostile.c" -lm
+	check "hostile.c builds with -D$v" [ $? -eq 0 ]
+done
+"$W" -q -s 16 --plugin ./hostile_NONE.so -o out.png blob.txt
+check "the well-behaved blob renders" [ $? -eq 0 -a -s out.png ]
+rm -f out.png
+for case in "PARSE_ZERO:its parse returned 0 (success) without a shape" \
+	"PARSE_POSITIVE:its parse returned 7, which is neither 0 (a shape) nor a negative error" \
+	"PARSE_SILENT:its parse failed without a message (it returned an error without calling host->fail)" \
+	"PARSE_ALIEN:its parse returned a shape whose table is not 'blob''s own"; do
+	v=${case%%:*} msg=${case#*:}
+	for tool in whitted scene2pov whitted-view; do
+		case $tool in
+		whitted) run=("$W" -s 16 -o out.png) ;;
+		scene2pov) run=("$S2P" -o out.pov) ;;
+		whitted-view) [ -x "$VIEW" ] || continue; run=("$VIEW") ;;
+		esac
+		expect_fail "$tool $v" "^blob.txt:5:1: error: object 'blob' of the plugin ./hostile_$v.so: $msg" \
+			"${run[@]}" --plugin ./hostile_$v.so blob.txt
+	done
+done
+# A parse error of a kind no parse returns (-RT_E_INVALID, a usage error's)
+# is still the scene's: exit 1, not 2.
+expect_fail "whitted PARSE_ODD_ERROR" "^blob.txt:5:1: error: blob: an error of the wrong kind" \
+	"$W" -s 16 -o out.png --plugin ./hostile_PARSE_ODD_ERROR.so blob.txt
+expect_fail "scene2pov EXPORT_POSITIVE" \
+	"out.pov: object 1 ('blob' of the plugin ./hostile_EXPORT_POSITIVE.so): its export_pov returned neither 0 nor an error (returned 3)" \
+	"$S2P" -o out.pov --plugin ./hostile_EXPORT_POSITIVE.so blob.txt
+expect_fail "scene2pov EXPORT_SILENT" \
+	"out.pov: object 1 ('blob' of the plugin ./hostile_EXPORT_SILENT.so): its export_pov failed (returned -4)" \
+	"$S2P" -o out.pov --plugin ./hostile_EXPORT_SILENT.so blob.txt
+check "scene2pov EXPORT_*: no .ini left" [ ! -e out.ini ]
+if command -v valgrind >/dev/null 2>&1; then
+	for v in PARSE_ZERO PARSE_POSITIVE PARSE_SILENT PARSE_ALIEN; do
+		valgrind -q --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=all \
+			--error-exitcode=99 "$W" -s 16 --plugin ./hostile_$v.so -o out.png blob.txt 2>vg.log
+		rc=$?
+		grep -v '^blob.txt:5:1: error: ' vg.log >vg-only.log
+		check "valgrind: hostile $v, exit 1, clean ($(head -c 300 vg-only.log))" [ $rc -eq 1 -a ! -s vg-only.log ]
+	done
+fi
+
 # Without the plugin, the keyword is unknown (the message says a plugin
 # may provide it).
 expect_fail "no plugin" "8:1: error: unknown object 'torus'.*needs a plugin" "$W" -s 16 -o out.png torus.txt

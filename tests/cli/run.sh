@@ -350,4 +350,108 @@ check "stdin error located" grep -q '^<stdin>:1:7: error: ' "$T/err"
 run -s 8 -o t.png --test-scene
 check "test scene" [ "$rc" -eq 0 ]
 
+# The first word: a mistyped subcommand, `whitted help`, a program's name
+# (whitted-view, scene2pov) are not scene files; a scene file of any name
+# is still read when it is there.  Unknown options of every program get a
+# "did you mean".
+clean_wd
+usage_case() {
+	local name=$1 want=$2
+	shift 2
+	(cd "$T/wd" && "$@") >"$T/out" 2>"$T/err"
+	rc=$?
+	check "$name: exit 2, not $rc" [ "$rc" -eq 2 ]
+	check "$name: message ($(head -1 "$T/err"))" grep -qF -- "$want" "$T/err"
+	check "$name: nothing written" wd_empty
+}
+usage_case "whitted comapre" "error: 'comapre' is not a subcommand (and no file); did you mean 'whitted compare'?" \
+	"$W" comapre "$SCENE" x.png
+usage_case "whitted grdae" "did you mean 'whitted grade'?" "$W" grdae --scene "$SCENE" x.png
+usage_case "whitted view" "'view' is not a subcommand (and no file): the viewer is its own program, whitted-view SCENE" \
+	"$W" view x.txt
+usage_case "whitted render" "whitted renders without one, whitted [OPTIONS] SCENE" "$W" render "$SCENE"
+usage_case "whitted help bogus" "help: no subcommand 'bogus'" "$W" help bogus
+(cd "$T/wd" && "$W" help) >"$T/out" 2>"$T/err"
+check "whitted help: exit 0 and the usage" [ $? -eq 0 ] && check "whitted help: the usage" grep -q '^Usage: whitted \[OPTIONS\] SCENE' "$T/out"
+(cd "$T/wd" && "$W" help compare) >"$T/out" 2>"$T/err"
+check "whitted help compare: compare's usage" grep -q '^Usage: whitted compare' "$T/out"
+cp "$SCENE" "$T/wd/comapre"
+run -q -s 8 -o c.png comapre
+check "a scene file named comapre is a scene" [ "$rc" -eq 0 -a -s "$T/wd/c.png" ]
+clean_wd
+usage_case "whitted --samles" "unknown option '--samles'; did you mean '--samples'?" "$W" --samles 2 "$SCENE"
+usage_case "whitted --recusrion=3" "unknown option '--recusrion=3'; did you mean '--recursion'?" "$W" --recusrion=3 "$SCENE"
+usage_case "whitted --bogus (nothing near)" "unknown option '--bogus'" "$W" --bogus "$SCENE"
+check "whitted --bogus: no guess" bash -c "! grep -q 'did you mean' '$T/err'"
+usage_case "merge --ouput" "unknown option '--ouput'; did you mean '--output'?" "$W" merge --ouput x.png a.png
+usage_case "compare --difff" "unknown option '--difff'; did you mean '--diff'?" "$W" compare --difff d.png "$SCENE" a.png
+usage_case "grade --cvs" "unknown option '--cvs'; did you mean '--csv'?" "$W" grade --cvs x.csv --scene "$SCENE" a.png
+usage_case "scene2pov --finsh" "unknown option '--finsh'; did you mean '--finish'?" "$ROOT/build/scene2pov" --finsh plain "$SCENE"
+# scripts/deps.sh (make render, make check): what the build needs is looked
+# for by what it provides, so that a system without dpkg but with the
+# libraries needs nothing (DPKG_QUERY names a program that is not there);
+# what is missing there is named, and nothing installed; on Debian as root
+# apt-get waits for a package lock held by another process (here a POSIX
+# lock on a file of ours, as apt takes it), says so, and gives up after
+# DEPS_LOCK_WAIT seconds (apt-get and dpkg-query are fakes that record).
+DEPS=$ROOT/scripts/deps.sh
+DPKG_QUERY=/nonexistent "$DEPS" build-essential pkg-config libpng-dev zlib1g-dev libstb-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, the libraries found: exit 0, silent ($(cat "$T/err"))" [ $? -eq 0 -a ! -s "$T/err" -a ! -s "$T/out" ]
+DPKG_QUERY=/nonexistent "$DEPS" libpng-dev libnothere-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, one missing: exit 1" [ $? -eq 1 ]
+check "deps: no dpkg, one missing: named, nothing installed" grep -q "not found: libnothere-dev (Debian's package names; not a Debian system, so nothing is" "$T/err"
+DPKG_QUERY=/nonexistent "$DEPS" --optional libnothere-dev >"$T/out" 2>"$T/err"
+check "deps: no dpkg, an optional one missing: exit 0" [ $? -eq 0 ]
+mkdir -p "$T/deps"
+printf '#!/bin/sh\nexit 1\n' >"$T/deps/dpkg-query"
+printf '#!/bin/sh\necho "$@" >>"%s/deps/apt.log"\n' "$T" >"$T/deps/apt-get"
+chmod +x "$T/deps/dpkg-query" "$T/deps/apt-get"
+: >"$T/deps/lock"
+if [ "$(id -u)" = 0 ] && command -v python3 >/dev/null; then
+	hold_lock() {
+		python3 -c 'import fcntl, sys, time
+f = open(sys.argv[1], "w"); fcntl.lockf(f, fcntl.LOCK_EX); open(sys.argv[1] + ".held", "w").close()
+time.sleep(float(sys.argv[2]))' "$T/deps/lock" "$1" &
+		holder=$!
+		for _ in $(seq 50); do [ -e "$T/deps/lock.held" ] && break; sleep 0.1; done
+	}
+	hold_lock 2
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" DEPS_LOCKS="$T/deps/lock" DEPS_LOCK_WAIT=20 \
+		"$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	check "deps: a held lock: waited, then installed (exit $?)" grep -q 'install -y -qq --no-install-recommends libnothere-dev' "$T/deps/apt.log"
+	check "deps: a held lock: says so" grep -q "^deps: waiting for the package lock, held by process $holder (python3)" "$T/err"
+	check "deps: a held lock: the lock's timeout passed on to apt-get" grep -q 'DPkg::Lock::Timeout=20 install' "$T/deps/apt.log"
+	wait "$holder"
+	rm -f "$T/deps/apt.log" "$T/deps/lock.held"
+	hold_lock 30
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" DEPS_LOCKS="$T/deps/lock" DEPS_LOCK_WAIT=1 \
+		"$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	rc=$?
+	kill "$holder" 2>/dev/null
+	wait "$holder" 2>/dev/null
+	check "deps: a lock held too long: exit 1" [ "$rc" -eq 1 ]
+	check "deps: a lock held too long: says why" grep -q "the package lock is still held after 1 s" "$T/err"
+	check "deps: a lock held too long: apt-get not run" [ ! -e "$T/deps/apt.log" ]
+else
+	DPKG_QUERY="$T/deps/dpkg-query" APT_GET="$T/deps/apt-get" "$DEPS" libnothere-dev >"$T/out" 2>"$T/err"
+	check "deps: not root: the apt-get line" grep -q 'apt-get install -y libnothere-dev' "$T/err"
+fi
+
+# scene2pov says what it wrote, and its .ini names its directory, so that
+# povray runs it from anywhere (tests/povcheck.sh runs it so).
+clean_wd
+mkdir "$T/wd/pov"
+(cd "$T/wd" && "$ROOT/build/scene2pov" -q -s 8 -o pov/s.pov "$SCENE") >"$T/out" 2>"$T/err"
+check "scene2pov: exit 0" [ $? -eq 0 ]
+pov_dir=$(cd "$T/wd/pov" && pwd -P)
+check "scene2pov: says what it wrote ($(cat "$T/out"))" \
+	[ "$(cat "$T/out")" = "scene2pov: wrote pov/s.pov and pov/s.ini; 'povray pov/s.ini' renders $pov_dir/s.png" ]
+check "scene2pov: the .ini's library path is its directory" grep -qx "Library_Path=\"$pov_dir\"" "$T/wd/pov/s.ini"
+check "scene2pov: the .ini writes the PNG beside it" grep -qx "Output_File_Name=\"$pov_dir/s.png\"" "$T/wd/pov/s.ini"
+check "scene2pov: the .ini reads the scene by its name" grep -qx 'Input_File_Name="s.pov"' "$T/wd/pov/s.ini"
+clean_wd
+if [ -x "$ROOT/build/whitted-view" ]; then
+	usage_case "whitted-view --fvo" "unknown option '--fvo'; did you mean '--fov'?" "$ROOT/build/whitted-view" --fvo 50 "$SCENE"
+fi
+
 finish

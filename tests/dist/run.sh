@@ -134,6 +134,20 @@ head -c $((sz - 40)) "$1" >t/cut.png
 expect_fail "merge a tile cut in its image data" 1 out.png "$1\|t/cut.png" "$W" merge -o out.png t/cut.png "$2" "$3" "$4"
 sed 's/region 0 0 18 18/region 0 0 18 19/' "$1" >t/edited.png
 expect_fail "merge a tile with an edited chunk" 1 out.png "bad CRC" "$W" merge -o out.png t/edited.png "$2" "$3" "$4"
+# Hostile tiles (tests/tools/hostile_png.py on tile 1): junk after IEND,
+# image data that inflates to 16 MiB more than the tile's rows, a header
+# claiming 16384x16384 in a small file, a damaged CRC in the image data:
+# each refused at once, in little memory (ulimit -v: a fraction of what
+# inflating them took) and time.
+python3 "$top/tests/tools/hostile_png.py" hostile "$1" >/dev/null
+for c in "tile-junk:junk after the end of the PNG (19 bytes after its IEND chunk)" \
+	"tile-bomb:too much image data: the header's 18x18 needs 990 bytes, the data inflates to more" \
+	"tile-claims:the header's 16384x16384 needs 805322752 bytes of image data, more than its" \
+	"tile-bad-crc:damaged PNG file (bad CRC in its IDAT chunk)"; do
+	f=${c%%:*} m=${c#*:}
+	expect_fail "merge $f" 1 out.png "$m" sh -c 'ulimit -v 262144; exec timeout 10 "$@"' sh \
+		"$W" merge -o out.png "hostile/$f.png" "$2" "$3" "$4"
+done
 echo keep >out.png
 "$W" merge -o out.png "$1" "$2" "$3" 2>/dev/null
 check "merge failure leaves an existing output alone" [ "$(cat out.png)" = keep ]

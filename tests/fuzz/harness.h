@@ -15,9 +15,15 @@ int fuzz_scene_one(const uint8_t *data, size_t size);
  * message printed. */
 int fuzz_init(void);
 
-/* Reads the bytes as a submitted image (image_read_memory: PNG, BMP,
- * PPM); when they read, compares the image with itself and its mirror
- * image and makes the difference picture.  Always returns 0. */
+/* Reads the bytes as a tile (tile_read_memory: libpng), and as a
+ * submitted image (image_read_memory: PNG, BMP, PPM); when they read as
+ * one, compares the image with itself and its mirror image and makes the
+ * difference picture.  Always returns 0. */
 int fuzz_image_one(const uint8_t *data, size_t size);
+
+/* Checks the bytes as a plugin file (plugin_elf_check: what the loader
+ * checks before dlopen; the bytes are never mapped or run).  Always
+ * returns 0. */
+int fuzz_plugin_one(const uint8_t *data, size_t size);
 
 #endif

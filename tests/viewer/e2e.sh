@@ -8,7 +8,9 @@
 # course example (classic), a spot-dialect course file (a spotlight, drawn
 # as a cone and lighting as a GL spotlight), a nearfar one (near plane,
 # aspect 1.7778, the infinite checkerboard, a cube and a pyramid) and a
-# nearfar scene whose near plane hides a cube and cuts a sphere.
+# nearfar scene whose near plane hides a cube and cuts a sphere.  Also:
+# no display, SIGINT and SIGTERM during a capture (nothing left), and a
+# plugin's failing tessellate.
 # Usage: tests/viewer/e2e.sh BUILD/whitted-view BUILD/whitted
 # Needs Xvfb, xdotool and ImageMagick (import, convert, compare), and the
 # course files of tests/data.
@@ -61,6 +63,16 @@ for f in "$spot_scene" "$nearfar_scene" "$near_scene"; do
 	[ -f "$f" ] || { echo "viewer-e2e: FAIL: $f is missing"; exit 1; }
 done
 cd "$tmp" || exit 1
+
+# Without a display: one clear line, exit 1 (not freeglut's "failed to open
+# display ''"), and an unreachable display says what to do too.
+(unset DISPLAY; "$viewer" "$scene" >/dev/null 2>nodisplay.txt)
+[ $? = 1 ] && grep -q "^whitted-view: error: no display: DISPLAY is not set (whitted-view needs an X display" nodisplay.txt &&
+	[ "$(grep -vc 'note: ' nodisplay.txt)" = 1 ]
+check $? "no DISPLAY: exit 1 and one line ($(grep -v 'note: ' nodisplay.txt))"
+DISPLAY=:4097 "$viewer" "$scene" >/dev/null 2>nodisplay.txt
+[ $? = 1 ] && grep -q "^whitted-view: error: failed to open display ':4097' (whitted-view needs an X display" nodisplay.txt
+check $? "an unreachable display: exit 1 and what to do ($(grep -v 'note: ' nodisplay.txt))"
 
 # A display of our own: -displayfd picks a free number and writes it once
 # the server is ready.
@@ -461,6 +473,51 @@ n=$(compare -metric AE -fuzz 10% window.png window-glass.png null: 2>&1)
 check $? "the glass sphere is drawn see-through: $n pixels differ from the opaque one (more than 1000)"
 quit_viewer
 cd "$tmp" || exit 1
+
+echo "signals: Ctrl-C and SIGTERM during a capture"
+# A capture long enough (1600 px, 9 samples a pixel) that the signal comes
+# while it is traced: the viewer exits 128 + N and leaves no capture-N.png
+# (the name it reserved) and no temporary file.
+for sig in INT TERM; do
+	mkdir "sig-$sig" && cd "sig-$sig" || exit 1
+	start_viewer '^whitted: scene\.txt' -s 1600 --samples 3 "$scene"
+	xdotool key 0
+	wait_for 100 '[ -e capture-1.png ]'
+	check $? "SIG$sig: 0 reserved capture-1.png"
+	sleep 0.3
+	kill -s "$sig" "$viewer_pid"
+	if wait_for 100 '! kill -0 "$viewer_pid" 2>/dev/null'; then
+		wait "$viewer_pid"
+		rc=$?
+		viewer_pid=""
+		want=$([ "$sig" = INT ] && echo 130 || echo 143)
+		[ "$rc" = "$want" ]
+		check $? "SIG$sig during a capture: exit $want (got $rc)"
+		[ -z "$(ls -A | grep -v -x -e stdout.txt -e stderr.txt)" ]
+		check $? "SIG$sig during a capture: nothing left ($(ls -A | tr '\n' ' '))"
+	else
+		bad "SIG$sig ended the viewer within 10 s"
+		kill -9 "$viewer_pid" 2>/dev/null
+		viewer_pid=""
+	fi
+	cd "$tmp" || exit 1
+done
+
+echo "plugins: a tessellate that fails"
+# A plugin whose tessellate returns 5 (tests/plugins/hostile.c): exit 1,
+# naming the shape and the plugin, never a crash.
+cc -std=c99 -I"$root/include" -fPIC -shared -DTESS_POSITIVE -o tess.so "$root/tests/plugins/hostile.c" -lm &&
+	printf '1\n16\n\n1\nblob\n0 0 20\n0.9 0.2 0.2\n0.1 0.5 0.4 0.0\n10\n\n1\n-100 -150 200\n1 1 1\n' >blob.txt
+"$viewer" --plugin ./tess.so blob.txt >/dev/null 2>tess.txt &
+tess_pid=$!
+if wait_for 100 '! kill -0 "$tess_pid" 2>/dev/null'; then
+	wait "$tess_pid"
+	[ $? = 1 ] && grep -q "error: shape 'blob' of the plugin ./tess.so: its tessellate returned neither 0 nor an error (returned 5)" tess.txt
+	check $? "a tessellate returning 5: exit 1 naming it ($(grep -v note: tess.txt))"
+else
+	kill "$tess_pid" 2>/dev/null
+	bad "a tessellate returning 5: the viewer ended"
+fi
 
 # The screenshots, for docs/img (viewer-nearfar.png there is an-akhand.txt's,
 # the Jan 2023 handout's own scene, at the starting view).

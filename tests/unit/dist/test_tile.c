@@ -236,11 +236,10 @@ static void test_tile_png_chunks(void **state)
 	free(b);
 }
 
-/* One byte changed in a chunk's data: RT_E_SYNTAX, for a bad CRC when the
- * chunk is read whole before it is used (the image data is inflated as it
- * comes, so zlib may object first). */
-static void assert_damage_refused(const unsigned char *good, size_t n, const char *type,
-				  bool in_pixels)
+/* One byte changed in a chunk's data: RT_E_SYNTAX for a bad CRC, whether
+ * the pixels are read or only the head (every chunk's CRC is checked
+ * before libpng reads any: image/png_check.c). */
+static void assert_damage_refused(const unsigned char *good, size_t n, const char *type)
 {
 	const char *path = tmp_path("damaged.png");
 	unsigned char *b = malloc(n);
@@ -258,13 +257,10 @@ static void assert_damage_refused(const unsigned char *good, size_t n, const cha
 	spill(path, b, n);
 	free(b);
 	snprintf(want, sizeof(want), "bad CRC in its %s chunk", type);
-	if (in_pixels)
-		assert_int_equal(tile_read(path, &info, NULL, &d), 0);
-	else
-		assert_int_equal(tile_read(path, &info, NULL, &d), -RT_E_SYNTAX);
+	assert_int_equal(tile_read(path, &info, NULL, &d), -RT_E_SYNTAX);
+	assert_non_null(strstr(d.msg, want));
 	assert_int_equal(tile_read(path, &info, &img, &d), -RT_E_SYNTAX);
-	if (!in_pixels)
-		assert_non_null(strstr(d.msg, want));
+	assert_non_null(strstr(d.msg, want));
 	assert_string_equal(d.file, path);
 }
 
@@ -282,21 +278,21 @@ static void test_tile_png_damaged(void **state)
 	assert_int_equal(tile_write(path, &img, &info, NULL, &d), 0);
 	image_free(&img);
 	b = slurp(path, &n);
-	assert_damage_refused(b, n, "tEXt", false);
-	assert_damage_refused(b, n, "oFFs", false);
-	assert_damage_refused(b, n, "vpAg", false);
-	assert_damage_refused(b, n, "IHDR", false);
-	/* Only the pixels' read looks at the image data. */
-	assert_damage_refused(b, n, "IDAT", true);
-	/* Cut short in the chunks, then in the image data. */
+	assert_damage_refused(b, n, "tEXt");
+	assert_damage_refused(b, n, "oFFs");
+	assert_damage_refused(b, n, "vpAg");
+	assert_damage_refused(b, n, "IHDR");
+	assert_damage_refused(b, n, "IDAT");
+	/* Cut short in the chunks, then in the image data: both reads see it. */
 	path = tmp_path("short.png");
 	spill(path, b, 60);
 	assert_int_equal(tile_read(path, &info, NULL, &d), -RT_E_SYNTAX);
-	assert_string_equal(d.msg, "truncated PNG file");
+	assert_non_null(strstr(d.msg, "truncated PNG file"));
 	spill(path, b, n - 20);
-	assert_int_equal(tile_read(path, &info, NULL, &d), 0);
+	assert_int_equal(tile_read(path, &info, NULL, &d), -RT_E_SYNTAX);
+	assert_non_null(strstr(d.msg, "truncated PNG file"));
 	assert_int_equal(tile_read(path, &info, &img, &d), -RT_E_SYNTAX);
-	assert_string_equal(d.msg, "truncated PNG file");
+	assert_non_null(strstr(d.msg, "truncated PNG file"));
 	free(b);
 }
 
