@@ -12,6 +12,7 @@
 #include "base/alloc.h"
 #include "base/thread.h"
 #include "grade/fit.h"
+#include "render/ray_tree.h"
 #include "render/render_packet.h"
 #include "scene/scene_impl.h"
 
@@ -60,10 +61,11 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, float *img, 
 	struct camera cam;
 	struct render_job rj;
 	struct ray_counts counts;
+	struct render_tree tree;
 	struct ray rays[COARSE_WIDE_PX];
 	struct color col[COARSE_WIDE_PX];
 	struct diag d;
-	bool packets = render_packets_wanted(w->job->scene->accel);
+	bool packets = render_packets_wanted(w->job->scene->accel) && !w->job->scene->glass;
 	int x, y;
 
 	p.look = vec3_add(e, vec3_sub(w->start->look, w->start->eye));
@@ -78,11 +80,12 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, float *img, 
 	render_job_init(&rj, w->job->scene, &cam, 1);
 	rj.settings = w->job->settings;
 	memset(&counts, 0, sizeof(counts));
+	render_tree_unbound(&tree, &counts);
 	for (y = 0; y < n; y++) {
 		for (x = 0; x < n; x++)
 			rays[x] = camera_ray(&cam, x, y);
 		if (packets)
-			render_rays_packets(&rj, rays, n, &counts, col);
+			render_rays_packets(&rj, rays, n, &tree, col);
 		else
 			for (x = 0; x < n; x++)
 				col[x] = render_trace(w->job->scene, &rj.settings, &rays[x], 1, NULL);

@@ -12,6 +12,7 @@
 #include "base/alloc.h"
 #include "accel/accel.h"
 #include "grade/fit.h"
+#include "render/ray_tree.h"
 #include "render/render_packet.h"
 #include "scene/scene_impl.h"
 
@@ -409,10 +410,11 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 	struct camera cam;
 	struct render_job rj;
 	struct ray_counts counts;
+	struct render_tree tree;
 	struct ray rays[FIT_RAYS];
 	struct color col[FIT_RAYS];
 	struct diag d;
-	bool packets = render_packets_wanted(job->scene->accel);
+	bool packets = render_packets_wanted(job->scene->accel) && !job->scene->glass;
 	int k, i, m;
 
 	if (!(v[FIT_FOV] > 1.0 && v[FIT_FOV] < 170.0) || !(fabs(v[FIT_PITCH]) < 89.0))
@@ -427,13 +429,14 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 	rj.settings.recursion = l->recursion > 0 && l->recursion < rj.settings.recursion
 					? l->recursion : rj.settings.recursion;
 	memset(&counts, 0, sizeof(counts));
+	render_tree_unbound(&tree, &counts);
 	memset(s->cells, 0, sizeof(float) * 3 * (size_t)l->n_cells);
 	for (k = 0; k < l->n_samples; k += m) {
 		m = l->n_samples - k < FIT_RAYS ? l->n_samples - k : FIT_RAYS;
 		for (i = 0; i < m; i++)
 			rays[i] = camera_ray(&cam, l->sx[k + i], l->sy[k + i]);
 		if (packets)
-			render_rays_packets(&rj, rays, m, &counts, col);
+			render_rays_packets(&rj, rays, m, &tree, col);
 		else
 			for (i = 0; i < m; i++)
 				col[i] = render_trace(job->scene, &rj.settings, &rays[i], 1, NULL);
