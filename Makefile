@@ -41,6 +41,12 @@ HAVE_ISAL := $(shell t=$$(mktemp) && printf '\043include <isa-l/igzip_lib.h>\nin
 	$(CC) $(CFLAGS) -x c - -o $$t -lisal >/dev/null 2>&1 && echo yes; rm -f $$t)
 DEFLATE_CFLAGS := $(if $(HAVE_ISAL),-DRT_HAVE_ISAL)
 DEFLATE_LIBS := $(if $(HAVE_ISAL),-lisal)
+# grade's zip files of submissions: libzip where pkg-config finds it
+# (Debian's libzip-dev, offered like ISA-L); without it grade says that
+# this build reads no zip files.
+HAVE_ZIP := $(shell pkg-config --exists libzip 2>/dev/null && echo yes)
+ZIP_CFLAGS := $(if $(HAVE_ZIP),-DRT_HAVE_LIBZIP $(shell pkg-config --cflags libzip))
+ZIP_LIBS := $(if $(HAVE_ZIP),$(shell pkg-config --libs libzip))
 ALL_CFLAGS := $(WARN) $(FP) $(CFLAGS) -Iinclude -Isrc $(PNG_CFLAGS) $(DEFLATE_CFLAGS) -pthread -MMD -MP
 LDLIBS := $(PNG_LIBS) $(DEFLATE_LIBS) -lz -lm -pthread
 # The sanitized build is the test build: it also has the allocator's
@@ -57,7 +63,7 @@ VERSION := $(shell sed -n 's/^\#define RT_VERSION "\(.*\)"/\1/p' include/whitted
 CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
-FAST_PKGS := libisal-dev
+FAST_PKGS := libisal-dev libzip-dev
 CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
@@ -167,8 +173,9 @@ $(BUILD)/san/libwhitted-tools.a: $(TOOLS_SRC:%.c=$(BUILD)/san/%.o)
 	@rm -f $@
 	ar rcs $@ $^
 
+$(BUILD)/src/cli/grade_zip.o $(BUILD)/san/src/cli/grade_zip.o: ALL_CFLAGS += $(ZIP_CFLAGS)
 $(BUILD)/whitted: $(WHITTED_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(BUILD)/libwhitted.a
-	$(CC) $(ALL_CFLAGS) -o $@ $^ $(LDLIBS)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ $(ZIP_LIBS) $(LDLIBS)
 
 $(BUILD)/pov_export/%.o: ALL_CFLAGS += -Ipov_export
 $(BUILD)/scene2pov: $(POV_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(BUILD)/libwhitted.a
@@ -183,7 +190,7 @@ $(BUILD)/whitted-view: $(VIEWER_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.
 # the same primitives (bench/embree_build.c); only where libembree-dev is.
 EMBREE_LIB_OBJ := $(filter-out $(BUILD)/src/accel/%,$(LIB_OBJ)) $(BUILD)/bench/embree_accel.o
 $(BUILD)/whitted-embree: $(WHITTED_SRC:%.c=$(BUILD)/%.o) $(BUILD)/libwhitted-tools.a $(EMBREE_LIB_OBJ)
-	$(CC) $(ALL_CFLAGS) -o $@ $^ -lembree3 $(LDLIBS)
+	$(CC) $(ALL_CFLAGS) -o $@ $^ -lembree3 $(ZIP_LIBS) $(LDLIBS)
 $(BUILD)/embree_build: $(BUILD)/bench/embree_build.o $(BUILD)/libwhitted.a
 	$(CC) $(ALL_CFLAGS) -o $@ $^ -lembree3 $(LDLIBS)
 

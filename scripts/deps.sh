@@ -53,6 +53,7 @@ provided() {
 	libstb-dev) compiles stb/stb_image.h ;;
 	libcmocka-dev) pc cmocka || compiles cmocka.h -lcmocka ;;
 	libisal-dev) compiles isa-l/igzip_lib.h -lisal ;;
+	libzip-dev) pc libzip || compiles zip.h -lzip ;;
 	libembree-dev) compiles embree3/rtcore.h -lembree3 ;;
 	freeglut3-dev) pc glut gl ;;
 	valgrind | python3 | povray | parallel | rsync | xdotool | xauth | bc) has "$1" ;;

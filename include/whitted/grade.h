@@ -165,6 +165,9 @@ struct grade_fit {
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d);
 
+/* The nearest hit of a ray in the job's scene, at *t (t in (0, *t)). */
+bool grade_primary_hit(const struct grade_job *job, const struct ray *r, double *t);
+
 /* The object-id buffer: for each pixel (y * width + x) of the job's
  * camera, the index in the scene (0-based, file order) of the object its
  * primary ray hits first, GRADE_ID_FLOOR for the floor or

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/alloc.h"
@@ -14,6 +15,38 @@
 /* The angle (radians) the ties of the given camera allow for: far below a
  * pixel, far above another renderer's rounding. */
 #define CHECK_TIE_ANGLE 1e-7
+
+/* A camera found is known to a fraction of a pixel: every pixel whose
+ * colour changes by more than 8 levels within a pixel of it (an edge, a
+ * checkerboard finer than the pixels towards the horizon, whose colours
+ * any error of the camera shuffles) is a tie too. */
+static void check_edge_ties(struct check_view *v)
+{
+	const int w = v->image.width, h = v->image.height;
+	const uint8_t *p = v->image.pixels;
+	int x, y, i, j, c;
+
+	for (y = 0; y < h; y++)
+		for (x = 0; x < w; x++) {
+			size_t k = (size_t)y * (size_t)w + (size_t)x;
+			bool edge = false;
+			if (v->ties[k])
+				continue;
+			for (j = -1; j <= 1 && !edge; j++)
+				for (i = -1; i <= 1 && !edge; i++) {
+					size_t q;
+					if (x + i < 0 || x + i >= w || y + j < 0 || y + j >= h)
+						continue;
+					q = (size_t)(y + j) * (size_t)w + (size_t)(x + i);
+					for (c = 0; c < 3 && !edge; c++)
+						edge = abs((int)p[3 * k + c] - (int)p[3 * q + c]) > 8;
+				}
+			if (edge) {
+				v->ties[k] = 1;
+				v->n_ties++;
+			}
+		}
+}
 
 int check_view_make(const struct check_reference *ref, const struct camera_params *p, int width,
 		    int height, double angle, struct check_view *v, struct diag *d)
@@ -33,9 +66,13 @@ int check_view_make(const struct check_reference *ref, const struct camera_param
 		check_view_free(v);
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the reference's ties");
 	}
-	if ((rc = grade_tie_mask(&v->job, &v->image, angle, v->ties, &v->n_ties, d)) < 0)
+	if ((rc = grade_tie_mask(&v->job, &v->image, angle, v->ties, &v->n_ties, d)) < 0) {
 		check_view_free(v);
-	return rc;
+		return rc;
+	}
+	if (angle > CHECK_TIE_ANGLE)
+		check_edge_ties(v);
+	return 0;
 }
 
 void check_view_free(struct check_view *v)

@@ -120,6 +120,10 @@ const struct check_view *check_result_view(const struct check_reference *ref,
  * itself failed (out of memory, interrupted) with d filled. */
 int check_image(struct check_reference *ref, const char *path, struct check_result *res,
 		struct diag *d);
+/* The same for an image in memory (a zip file's entry); name for the
+ * messages. */
+int check_image_data(struct check_reference *ref, const char *name, const unsigned char *data,
+		     size_t len, struct check_result *res, struct diag *d);
 void check_result_free(struct check_result *res);
 
 /* The difference picture of res: against the reference of its
@@ -152,10 +156,5 @@ void check_diagnosis(const struct check_reference *ref, const struct check_resul
 /* One line on where it differs, object by object ("the 3 spheres and 2
  * triangles match; the floor differs in 41% of its pixels"), or "". */
 void check_objects_line(const struct check_result *res, char *buf, size_t size);
-
-/* The HTML report of grade: the reference, and per image its row, the
- * figures, the submission and the difference.  Fails with the diag filled. */
-int check_write_report(const struct check_options *o, const struct check_reference *ref,
-		       const struct check_result *res, struct diag *d);
 
 #endif

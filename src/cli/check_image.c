@@ -20,10 +20,11 @@
 #define CHECK_CLOSE_PSNR 30.0
 #define CHECK_FAR_GAIN 6.0
 
-/* The camera found counts as another one when its reference differs from
- * the given one's in more than this share of the pixels and comes at
- * least CHECK_MOVED_GAIN dB nearer the submission. */
-#define CHECK_MOVED_SHARE 0.005
+/* The camera found counts as another one when it shows the scene's
+ * points more than CHECK_MOVED_PIXELS from where the given one does
+ * (check_displacement) and comes at least CHECK_MOVED_GAIN dB nearer
+ * the submission. */
+#define CHECK_MOVED_PIXELS 1.5
 #define CHECK_MOVED_GAIN 1.0
 /* ... and reaches at least this: below it, the camera is as unknown as
  * before (another scene, another renderer). */
@@ -88,14 +89,46 @@ static bool check_first_is_geometric(const struct check_result *res)
 	return res->n_ranks > 0 && (a || b);
 }
 
-/* The share of the pixels of a and b whose worst channel differs by more
- * than 2 levels. */
-static double check_share_differing(const struct image *a, const struct image *b)
-{
-	struct grade_figures f;
+/* How far camera b shows what camera a shows at its pixels, in pixels:
+ * the hit points of a grid of a's primary rays (directions for the
+ * background) seen through b; the share CHECK_MOVED_QUANTILE of them
+ * move at most that far.  A half-pixel shift (rays through the pixels'
+ * corners) is no other camera. */
+#define CHECK_MOVED_GRID 24
+#define CHECK_MOVED_QUANTILE 0.5
 
-	grade_figures_of(a, b, 1, 0, 0, &f);
-	return f.off2;
+static double check_displacement(const struct check_view *a, const struct check_view *b)
+{
+	double moves[CHECK_MOVED_GRID * CHECK_MOVED_GRID];
+	int n = 0, i, j, k;
+
+	for (j = 0; j < CHECK_MOVED_GRID; j++)
+		for (i = 0; i < CHECK_MOVED_GRID; i++) {
+			int px = (int)((i + 0.5) * a->camera.width / CHECK_MOVED_GRID);
+			int py = (int)((j + 0.5) * a->camera.height / CHECK_MOVED_GRID);
+			struct ray r = camera_ray(&a->camera, px, py);
+			struct vec3 d;
+			double t = INFINITY, zf, u, v;
+			if (grade_primary_hit(&a->job, &r, &t))
+				d = vec3_sub(vec3_add_scaled(r.origin, r.dir, t), b->camera.eye);
+			else
+				d = r.dir;
+			zf = vec3_dot(d, b->camera.forward);
+			if (!(zf > 0.0)) {
+				moves[n++] = INFINITY;
+				continue;
+			}
+			u = (vec3_dot(d, b->camera.right) / zf + b->camera.half_width) / b->camera.pixel_scale_x - 0.5;
+			v = (b->camera.half_height - vec3_dot(d, b->camera.up) / zf) / b->camera.pixel_scale - 0.5;
+			moves[n++] = hypot(u - px, v - py);
+		}
+	for (i = 1; i < n; i++)
+		for (k = i; k > 0 && moves[k - 1] > moves[k]; k--) {
+			double t = moves[k];
+			moves[k] = moves[k - 1];
+			moves[k - 1] = t;
+		}
+	return moves[(int)(CHECK_MOVED_QUANTILE * (n - 1))];
 }
 
 /* The camera that took the image, when it is not the given one: fitted
@@ -129,7 +162,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
-	res->moved = check_share_differing(&res->found.image, &v->image) > CHECK_MOVED_SHARE &&
+	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
 		     res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
 		     res->fig_found.psnr >= CHECK_MOVED_PSNR;
 	if (!res->moved)
@@ -254,15 +287,12 @@ static int check_at(struct check_view *v, struct check_result *res, struct grade
 	return rc;
 }
 
+static int check_image_read(struct check_reference *ref, struct check_result *res,
+			    struct diag *d);
+
 int check_image(struct check_reference *ref, const char *path, struct check_result *res,
 		struct diag *d)
 {
-	struct check_view *v = &ref->view;
-	struct grade_rank given[GRADE_MAX_RANKS];
-	size_t n_given;
-	enum check_explained was;
-	bool textured;
-	double best_given;
 	int rc;
 
 	memset(res, 0, sizeof(*res));
@@ -274,6 +304,38 @@ int check_image(struct check_reference *ref, const char *path, struct check_resu
 		res->verdict = CHECK_UNREADABLE;
 		return 0;
 	}
+	return check_image_read(ref, res, d);
+}
+
+int check_image_data(struct check_reference *ref, const char *name, const unsigned char *data,
+		     size_t len, struct check_result *res, struct diag *d)
+{
+	int rc;
+
+	memset(res, 0, sizeof(*res));
+	diag_clear(&res->error);
+	rc = image_read_memory(data, len, name, &res->image, NULL, &res->error);
+	if (rc == -RT_E_NOMEM)
+		return diag_fail(d, RT_E_NOMEM, "%s", res->error.msg);
+	if (rc < 0) {
+		res->verdict = CHECK_UNREADABLE;
+		return 0;
+	}
+	return check_image_read(ref, res, d);
+}
+
+/* The check of res->image, read. */
+static int check_image_read(struct check_reference *ref, struct check_result *res,
+			    struct diag *d)
+{
+	struct check_view *v = &ref->view;
+	struct grade_rank given[GRADE_MAX_RANKS];
+	size_t n_given;
+	enum check_explained was;
+	bool textured;
+	double best_given;
+	int rc;
+
 	if (res->image.width != v->camera.width || res->image.height != v->camera.height) {
 		/* Compared at its own size: the file's size may not be what the
 		 * student rendered (a window's size, another -s). */

@@ -1,133 +1,309 @@
-/* whitted grade: a class's images against one reference, one row each,
- * with a CSV file and an HTML report for the teacher. */
+/* whitted grade: a class's images (files, folders, zip files; one or more
+ * scenes each) against their references, one row each, with the points
+ * of a table, a summary of the class, a CSV file and an HTML report. */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "base/alloc.h"
-#include "cli/check.h"
 #include "cli/cli.h"
+#include "cli/grade_class.h"
 #include "cli/tool.h"
 
-static const char *grade_verdict_name(enum check_verdict v)
+const char *grade_verdict_name(enum check_verdict v)
 {
 	return v == CHECK_MATCH ? "match" : v == CHECK_DIFFERS ? "differs" : "unreadable";
 }
 
-/* A quoted CSV field; one that starts with = + - @ (or a tab or carriage
- * return) gets a leading ' so that a spreadsheet shows it as text instead
- * of running it as a formula (a file named "=HYPERLINK(...)"). */
-static void csv_field(FILE *f, const char *s)
+const char *grade_outcome(const struct grade_row *r, char *buf, size_t size)
 {
-	fputc('"', f);
-	if (*s && strchr("=+-@\t\r", *s))
-		fputc('\'', f);
-	for (; *s; s++) {
-		if (*s == '"')
-			fputc('"', f);
-		fputc(*s, f);
+	const struct check_result *res = &r->res;
+
+	if (res->verdict == CHECK_UNREADABLE)
+		return "unreadable";
+	if (res->verdict == CHECK_MATCH)
+		return res->moved ? "camera" : "match";
+	if (res->explained == CHECK_EXPLAINED && res->n_ranks > 0) {
+		snprintf(buf, size, "%s", r->best);
+		return buf;
 	}
-	fputc('"', f);
+	return res->explained == CHECK_CLOSE ? "close" : "differs";
 }
 
-struct grade_csv {
-	const struct check_options *o;
-	const struct check_reference *ref;
-	const struct check_result *res;
-};
-
-static int grade_fill_csv(void *ctx, FILE *f, struct diag *d)
+/* The points of a row by the table. */
+static double grade_points_of(const struct grade_class *c, const struct grade_row *r)
 {
-	const struct grade_csv *c = ctx;
-	char diagnosis[1024];
-	int i;
+	const struct grade_marks *m = &c->marks;
+	const struct check_result *res = &r->res;
+	const struct check_reference *ref = &c->refs[r->in->scene];
+	enum clamp_mode clamp = ref->base.settings.clamp;
 
-	fprintf(f, "file,verdict,psnr,mean_error,off2,off8,off32,cause,cause_psnr,explains,diagnosis\n");
-	for (i = 0; i < c->o->n_images; i++) {
-		const struct check_result *r = &c->res[i];
-		csv_field(f, c->o->images[i]);
-		fprintf(f, ",%s,", grade_verdict_name(r->verdict));
-		if (r->verdict != CHECK_UNREADABLE) {
-			if (isinf(r->fig.psnr))
-				fprintf(f, "inf");
-			else
-				fprintf(f, "%.3f", r->fig.psnr);
-			fprintf(f, ",%.4f,%.6f,%.6f,%.6f", r->fig.mean_error, r->fig.off2, r->fig.off8,
-				r->fig.off32);
-		} else {
-			fprintf(f, ",,,,");
+	if (res->verdict == CHECK_UNREADABLE)
+		return m->unreadable;
+	if (res->verdict == CHECK_MATCH)
+		return res->moved ? m->camera : m->match;
+	if (res->explained == CHECK_EXPLAINED && res->n_ranks > 0) {
+		const struct grade_rank *b = &res->ranks[0];
+		double p = grade_marks_cause(m, grade_cause_text(b->cause, clamp)->id);
+		if (b->also != RT_CAUSE_NONE) {
+			double q = grade_marks_cause(m, grade_cause_text(b->also, clamp)->id);
+			p = (p < q ? p : q) - (m->cause - m->close);
 		}
-		/* A cause only when it explains the image or comes close; causes
-		 * ranked first equally joined by " or ": none is preferred. */
-		if (r->verdict == CHECK_DIFFERS && r->n_ranks > 0 && r->explained != CHECK_NONE) {
-			size_t k;
-			fputc(',', f);
-			for (k = 0; k < r->n_ranks && (k == 0 || r->ranks[k].first_equal); k++)
-				fprintf(f, "%s%s", k ? " or " : "",
-					grade_cause_text(r->ranks[k].cause, c->ref->base.settings.clamp)->id);
-			if (isinf(r->ranks[0].fig.psnr))
-				fprintf(f, ",inf");
-			else
-				fprintf(f, ",%.3f", r->ranks[0].fig.psnr);
-			fprintf(f, ",%s,", r->explained == CHECK_EXPLAINED ? "yes" : "no");
-		} else {
-			fprintf(f, ",,,,");
-		}
-		check_diagnosis(c->ref, r, diagnosis, sizeof(diagnosis));
-		csv_field(f, diagnosis);
-		fputc('\n', f);
+		return p;
 	}
-	if (ferror(f))
-		return diag_fail(d, RT_E_IO, "cannot write the CSV file");
+	return res->explained == CHECK_CLOSE ? m->close : m->differs;
+}
+
+/* An output's path, checked before the first image is graded: its
+ * folder exists and takes a new file, and it is no folder itself. */
+static int grade_check_output(const char *path, const char *what)
+{
+	char dir[4096];
+	const char *slash = strrchr(path, '/');
+	size_t n = slash ? (size_t)(slash - path) : 0;
+	char *probe;
+	int fd;
+
+	if (n >= sizeof(dir) - 16)
+		return tool_usage_error("%s: the path '%s' is too long", what, path);
+	if (slash) {
+		memcpy(dir, path, n ? n : 1);
+		dir[n ? n : 1] = '\0';
+	} else {
+		strcpy(dir, ".");
+	}
+	if (access(path, F_OK) == 0 && access(path, W_OK) != 0) {
+		fprintf(stderr, "whitted: error: %s: cannot write %s '%s': %s\n", what, what, path,
+			strerror(errno));
+		return TOOL_EXIT_FAILURE;
+	}
+	probe = rt_malloc(strlen(dir) + 32);
+	if (!probe)
+		return TOOL_EXIT_FAILURE;
+	sprintf(probe, "%s/.whitted-grade-XXXXXX", dir);
+	fd = mkstemp(probe);
+	if (fd < 0) {
+		fprintf(stderr, "whitted: error: %s: cannot write %s '%s': %s (checked before grading)\n",
+			what, what, path, strerror(errno));
+		rt_free(probe);
+		return TOOL_EXIT_FAILURE;
+	}
+	close(fd);
+	unlink(probe);
+	rt_free(probe);
 	return 0;
+}
+
+/* The references of the scenes, each loaded from the options as given
+ * (loading one resolves its camera and floor into the options). */
+static int grade_references(struct check_options *o, struct grade_class *c)
+{
+	struct cli_scene given = o->scene;
+	int s, status;
+
+	for (s = 0; s < (o->n_scenes ? o->n_scenes : 1); s++) {
+		o->scene = given;
+		o->scene.path = o->n_scenes ? o->scenes[s] : NULL;
+		if ((status = check_reference_make(o, &c->refs[s])) != 0)
+			return status;
+		c->n_refs = s + 1;
+	}
+	o->scene = given;
+	o->scene.path = o->n_scenes ? o->scenes[0] : NULL;
+	return 0;
+}
+
+static int grade_png_of(const struct image *img, struct grade_png *p, struct diag *d)
+{
+	p->width = img->width;
+	p->height = img->height;
+	return image_encode_png(img, &p->data, &p->len, d);
+}
+
+/* The row's pictures for the report, then its images freed. */
+static int grade_keep_pictures(const struct grade_class *c, struct grade_row *r, struct diag *d)
+{
+	const struct check_reference *ref = &c->refs[r->in->scene];
+	const struct check_view *v;
+	struct image diff = { 0, 0, NULL };
+	int rc;
+
+	if (r->res.verdict == CHECK_UNREADABLE)
+		return 0;
+	v = check_result_view(ref, &r->res);
+	if ((rc = grade_png_of(&v->image, &r->reference, d)) < 0 ||
+	    (rc = grade_png_of(&r->res.image, &r->submission, d)) < 0 ||
+	    (rc = check_diff_picture(ref, &r->res, &diff, d)) < 0)
+		return rc;
+	rc = grade_png_of(&diff, &r->difference, d);
+	image_free(&diff);
+	return rc;
+}
+
+static void grade_row_words(const struct grade_class *c, struct grade_row *r)
+{
+	const struct check_reference *ref = &c->refs[r->in->scene];
+	const struct check_result *res = &r->res;
+	size_t len = 0;
+
+	check_diagnosis(ref, res, r->diagnosis, sizeof(r->diagnosis));
+	check_objects_line(res, r->objects, sizeof(r->objects));
+	r->camera[0] = r->best[0] = '\0';
+	if (res->moved) {
+		check_camera_options(&res->found.params, r->camera, sizeof(r->camera));
+		len = (size_t)snprintf(r->best, sizeof(r->best), "camera");
+	}
+	if (res->verdict == CHECK_DIFFERS && res->n_ranks > 0 && res->explained != CHECK_NONE) {
+		char id[96];
+		check_cause_id(ref, &res->ranks[0], id, sizeof(id));
+		snprintf(r->best + len, sizeof(r->best) - len, "%s%s", len ? "+" : "", id);
+	}
+	for (r->n_causes = 0; res->verdict == CHECK_DIFFERS && r->n_causes < 5 && (size_t)r->n_causes < res->n_ranks;
+	     r->n_causes++) {
+		struct grade_row_cause *rc = &r->causes[r->n_causes];
+		const struct grade_rank *k = &res->ranks[r->n_causes];
+		check_cause_id(ref, k, rc->id, sizeof(rc->id));
+		check_cause_words(ref, res, k, rc->words, sizeof(rc->words));
+		check_cause_fix(ref, k, rc->fix, sizeof(rc->fix));
+		rc->psnr = k->fig.psnr;
+		rc->estimated = k->estimated;
+		rc->explains = k->fig.match;
+		rc->first_equal = k->first_equal;
+	}
+}
+
+static void grade_print_row(const struct grade_row *r)
+{
+	printf("%-32s %-10s ", r->in->label, grade_verdict_name(r->res.verdict));
+	if (r->res.verdict == CHECK_UNREADABLE)
+		printf("%9s", "-");
+	else if (isinf(r->res.fig.psnr))
+		printf("%9s", "inf");
+	else
+		printf("%6.2f dB", r->res.fig.psnr);
+	printf(" %6g  %s\n", r->points, r->diagnosis);
+	fflush(stdout);
+}
+
+/* How many rows of each outcome, in the order first met. */
+static void grade_print_summary(const struct grade_class *c)
+{
+	char names[64][160], buf[160];
+	size_t counts[64], n = 0, k, j, students = 0;
+	size_t verdicts[3] = { 0, 0, 0 };
+
+	for (k = 0; k < c->n_rows; k++) {
+		const char *o = grade_outcome(&c->rows[k], buf, sizeof(buf));
+		verdicts[c->rows[k].res.verdict]++;
+		if (k == 0 || strcmp(c->rows[k].in->student, c->rows[k - 1].in->student) != 0)
+			students++;
+		for (j = 0; j < n && strcmp(names[j], o) != 0; j++)
+			;
+		if (j == n && n < 64) {
+			snprintf(names[n], sizeof(names[n]), "%s", o);
+			counts[n++] = 0;
+		}
+		if (j < n)
+			counts[j]++;
+	}
+	printf("class: %zu image%s of %zu student%s: %zu match, %zu differ, %zu unreadable; by outcome:",
+	       c->n_rows, c->n_rows == 1 ? "" : "s", students, students == 1 ? "" : "s",
+	       verdicts[CHECK_MATCH], verdicts[CHECK_DIFFERS], verdicts[CHECK_UNREADABLE]);
+	for (j = 0; j < n; j++)
+		printf("%s %s %zu", j ? "," : "", names[j], counts[j]);
+	printf("\n");
+}
+
+static void grade_class_free(struct grade_class *c)
+{
+	size_t k;
+	int s;
+
+	for (k = 0; k < c->n_rows; k++) {
+		check_result_free(&c->rows[k].res);
+		rt_free(c->rows[k].reference.data);
+		rt_free(c->rows[k].submission.data);
+		rt_free(c->rows[k].difference.data);
+	}
+	rt_free(c->rows);
+	grade_inputs_free(&c->inputs);
+	for (s = 0; s < c->n_refs; s++)
+		check_reference_free(&c->refs[s]);
 }
 
 int grade_main(int argc, char **argv)
 {
 	struct check_options o;
-	struct check_reference ref;
-	struct check_result *res = NULL;
+	struct grade_class c;
 	struct diag d;
-	int status = check_args_parse(argc, argv, true, &o), i, done = 0, rc = 0;
+	int status = check_args_parse(argc, argv, true, &o), rc = 0;
 	bool all_match = true;
+	size_t k;
 
 	if (status != 0)
 		return status < 0 ? 0 : status;
-	cli_set_signals();
-	if ((status = check_reference_make(&o, &ref)) != 0)
-		return status;
+	memset(&c, 0, sizeof(c));
+	c.o = &o;
 	diag_clear(&d);
-	if (!(res = rt_calloc((size_t)o.n_images, sizeof(*res)))) {
-		diag_fail(&d, RT_E_NOMEM, "out of memory for %d results", o.n_images);
-		rc = -RT_E_NOMEM;
+	/* Everything that can fail before the first image is graded. */
+	if ((o.report_path && (status = grade_check_output(o.report_path, "--output")) != 0) ||
+	    (o.csv_path && (status = grade_check_output(o.csv_path, "--csv")) != 0))
+		return status;
+	if (o.marks_path) {
+		if ((rc = grade_marks_read(o.marks_path, &c.marks, &d)) < 0) {
+			tool_print_diag(&d, "error");
+			return TOOL_EXIT_FAILURE;
+		}
+	} else {
+		grade_marks_default(&c.marks);
+	}
+	cli_set_signals();
+	if ((rc = grade_inputs_collect(o.images, o.n_images, o.scenes, o.n_scenes > 0 ? o.n_scenes : 1,
+				       &c.inputs, &d)) < 0)
+		goto out;
+	if (c.inputs.n == 0) {
+		fprintf(stderr, "whitted: error: no image found in the operands (PNG, BMP or PPM files, "
+			"folders or zip files of them)\n");
+		status = TOOL_EXIT_FAILURE;
+		goto done;
+	}
+	if ((status = grade_references(&o, &c)) != 0)
+		goto done;
+	if (!(c.rows = rt_calloc(c.inputs.n, sizeof(*c.rows)))) {
+		rc = diag_fail(&d, RT_E_NOMEM, "out of memory for %zu results", c.inputs.n);
 		goto out;
 	}
-	printf("%-32s %-10s %9s  %s\n", "file", "verdict", "PSNR", "likely cause");
-	for (i = 0; i < o.n_images; i++) {
-		char diagnosis[1024];
-		done = i + 1;
-		if ((rc = check_image(&ref, o.images[i], &res[i], &d)) < 0)
+	printf("%-32s %-10s %9s %6s  %s\n", "file", "verdict", "PSNR", "points", "likely cause");
+	for (k = 0; k < c.inputs.n; k++) {
+		struct grade_row *r = &c.rows[k];
+		struct check_reference *ref;
+		r->in = &c.inputs.v[k];
+		ref = &c.refs[r->in->scene];
+		c.n_rows = k + 1;
+		rc = r->in->path ? check_image(ref, r->in->path, &r->res, &d)
+				 : check_image_data(ref, r->in->label, r->in->data, r->in->len, &r->res, &d);
+		if (rc < 0)
 			goto out;
-		all_match = all_match && res[i].verdict == CHECK_MATCH;
-		printf("%-32s %-10s ", o.images[i], grade_verdict_name(res[i].verdict));
-		if (res[i].verdict == CHECK_UNREADABLE)
-			printf("%9s", "-");
-		else if (isinf(res[i].fig.psnr))
-			printf("%9s", "inf");
-		else
-			printf("%6.2f dB", res[i].fig.psnr);
-		check_diagnosis(&ref, &res[i], diagnosis, sizeof(diagnosis));
-		printf("  %s\n", diagnosis);
-		fflush(stdout);
-	}
-	if (o.csv_path) {
-		struct grade_csv c = { &o, &ref, res };
-		if ((rc = image_write_file(o.csv_path, grade_fill_csv, &c, &cli_cancelled, &d)) < 0)
+		grade_row_words(&c, r);
+		r->points = grade_points_of(&c, r);
+		all_match = all_match && r->res.verdict == CHECK_MATCH;
+		grade_print_row(r);
+		if (o.report_path && (rc = grade_keep_pictures(&c, r, &d)) < 0)
 			goto out;
+		image_free(&r->res.image);
+		check_view_free(&r->res.own);
+		check_view_free(&r->res.found);
+		rt_free(r->res.ids);
+		r->res.ids = NULL;
 	}
-	if (o.report_path && (rc = check_write_report(&o, &ref, res, &d)) < 0)
+	grade_print_summary(&c);
+	if (o.csv_path && (rc = grade_write_csv(&c, o.csv_path, &d)) < 0)
+		goto out;
+	if (o.report_path && (rc = grade_write_report(&c, o.report_path, &d)) < 0)
 		goto out;
 	status = all_match ? TOOL_EXIT_OK : CHECK_EXIT_DIFFERS;
 out:
@@ -136,9 +312,7 @@ out:
 		status = rc == -RT_E_INTERRUPTED || cli_cancelled ? TOOL_EXIT_SIGNAL + (int)cli_cancelled
 								  : TOOL_EXIT_FAILURE;
 	}
-	for (i = 0; i < done; i++)
-		check_result_free(&res[i]);
-	rt_free(res);
-	check_reference_free(&ref);
+done:
+	grade_class_free(&c);
 	return status;
 }

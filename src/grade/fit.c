@@ -14,6 +14,7 @@
 #include "base/thread.h"
 #include "grade/cmaes.h"
 #include "grade/fit.h"
+#include "scene/scene_impl.h"
 
 #define FIT_MAX_THREADS 64
 #define FIT_COARSE_KEEP 32
@@ -375,6 +376,8 @@ out:
  * that fits best there is clear. */
 #define FIT_HYPOTHESES 8
 #define FIT_HYPOTHESIS_STAGES 3
+/* The hypotheses whose floor aliases are tried. */
+#define FIT_ALIAS_HYPOTHESES 3
 
 /* A pattern search in the local moves (nearly independent, so one at a
  * time will do): each iteration scores x moved by +-step along each
@@ -497,30 +500,76 @@ static double fit_local_cmaes(struct fit_batch *b, double *x, double pivot, cons
 	return f0;
 }
 
+/* The middle of the scene's objects (the floor and unbounded shapes
+ * aside): the point the alias moves keep in view. */
+static struct vec3 fit_scene_centre(const struct scene *s)
+{
+	struct vec3 sum = vec3_make(0.0, 0.0, 0.0);
+	size_t i, n = 0;
+
+	for (i = 0; i < s->n_shapes; i++) {
+		struct aabb box;
+		if (s->shapes[i] == s->floor || !shape_bounds(s->shapes[i], &box) ||
+		    !vec3_is_finite(box.min) || !vec3_is_finite(box.max))
+			continue;
+		sum = vec3_add(sum, vec3_scale(vec3_add(box.min, box.max), 0.5));
+		n++;
+	}
+	return n ? vec3_scale(sum, 1.0 / (double)n) : sum;
+}
+
 /* The checkerboard looks the same from eyes a whole diagonal cell apart
  * (white where i + j is even): the blurred levels cannot tell them apart
  * by the floor, only by the objects, which are small.  So each such
- * neighbour of x, up to two cells each way along both diagonals, is
- * scored, and x moves to the best. */
-#define FIT_ALIAS_REACH 2
+ * neighbour of x, up to FIT_ALIAS_REACH cells each way along both
+ * diagonals, is scored, turned to keep the scene's middle where x sees
+ * it and zoomed to keep its size, and x moves to the best. */
+#define FIT_ALIAS_REACH 4
 
 static void fit_floor_aliases(struct fit_batch *b, double *x, long *evals)
 {
 	const struct scene_view *v = scene_view_of(b->job->scene);
-	double xs[(2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1) * FIT_DIM];
-	double fs[(2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1)];
-	double c = v->floor_cell;
-	int i, j, n = 0, k, best = 0;
+	enum { N = 2 * (2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1) };
+	double xs[N * FIT_DIM], fs[N], c = v->floor_cell, dist0;
+	struct vec3 eye0;
+	struct camera_params base, p;
+	struct vec3 centre, f0;
+	int i, j, n = 0, k, best = -1;
 
 	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
 		return;
+	memset(&base, 0, sizeof(base));
+	fit_params_of(x, &base, &p);
+	eye0 = p.eye;
+	centre = fit_scene_centre(b->job->scene);
+	f0 = vec3_normalize(vec3_sub(p.look, p.eye));
+	dist0 = vec3_dot(vec3_sub(centre, eye0), f0);
 	for (i = -FIT_ALIAS_REACH; i <= FIT_ALIAS_REACH; i++)
-		for (j = -FIT_ALIAS_REACH; j <= FIT_ALIAS_REACH; j++, n++) {
-			memcpy(xs + n * FIT_DIM, x, sizeof(double) * FIT_DIM);
-			xs[n * FIT_DIM + FIT_X] += c * (i + j);
-			xs[n * FIT_DIM + FIT_Y] += c * (i - j);
+		for (j = -FIT_ALIAS_REACH; j <= FIT_ALIAS_REACH; j++) {
+			struct camera_params q = p;
+			struct vec3 shift = vec3_make(c * (i + j), c * (i - j), 0.0), f;
+			double dist;
 			if (i == 0 && j == 0)
 				best = n;
+			q.eye = vec3_add(p.eye, shift);
+			/* As it is, which keeps the floor where it was; and turned
+			 * to the scene, which keeps the objects. */
+			q.look = vec3_add(q.eye, f0);
+			fit_view_of(&q, xs + n * FIT_DIM);
+			n++;
+			if (i == 0 && j == 0)
+				continue;
+			/* The ray to the centre turns as much as the eye moved
+			 * round it; the field scales with its distance along
+			 * the view. */
+			f = vec3_normalize(vec3_sub(vec3_add_scaled(eye0, f0, dist0 > 1.0 ? dist0 : 1.0), q.eye));
+			q.look = vec3_add(q.eye, f);
+			dist = vec3_dot(vec3_sub(centre, q.eye), f);
+			if (dist0 > 1.0 && dist > 1.0)
+				q.fov_deg = 2.0 * atan(tan(p.fov_deg * 3.14159265358979323846 / 360.0) * dist0 / dist) *
+					    360.0 / (2.0 * 3.14159265358979323846);
+			fit_view_of(&q, xs + n * FIT_DIM);
+			n++;
 		}
 	fit_batch_run(b, xs, fs, n);
 	*evals += n;
@@ -610,8 +659,8 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	const int n_stages = (int)(sizeof(fit_stages) / sizeof(fit_stages[0]));
 	const int wide = sub->width > sub->height ? sub->width : sub->height;
 	double hyp[FIT_HYPOTHESES][FIT_DIM], hf[FIT_HYPOTHESES], pivot[FIT_HYPOTHESES];
-	double t_start = fit_clock();
-	int s, k, n_hyp = 1, rc = 0;
+	double t_start = fit_clock(), prev_sigma = INFINITY;
+	int s, k, n_hyp = 1, rc = 0, eff, prev_cells = 0;
 
 	memset(out, 0, sizeof(*out));
 	out->camera = starts[0];
@@ -625,8 +674,13 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		double pixel_deg;
 		long evals = 0;
 
-		if (s > 0 && st->cells > wide)
+		/* A small image's levels stop at its pixels: then only their
+		 * blur goes on shrinking. */
+		eff = st->cells < wide ? st->cells : wide;
+		if (s > 0 && eff == prev_cells && !(st->sigma < prev_sigma))
 			continue;
+		prev_cells = eff;
+		prev_sigma = st->sigma;
 		if ((rc = fit_stage_level(st, sub, hyp[0][FIT_FOV], &level, &pixel_deg, d)) < 0)
 			return rc;
 		if ((rc = fit_batch_open(&batch, &level, job, &starts[0], d)) < 0) {
@@ -644,7 +698,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 				;
 		} else {
 			if (s == 1)
-				for (k = 0; k < n_hyp; k++)
+				for (k = 0; k < n_hyp && k < FIT_ALIAS_HYPOTHESES; k++)
 					fit_floor_aliases(&batch, hyp[k], &evals);
 			for (k = 0; k < n_hyp && rc == 0; k++) {
 				hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <pthread.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/alloc.h"
@@ -41,6 +42,7 @@ struct coarse_target {
 
 struct coarse_eye {
 	struct vec3 eye;
+	int order;			/* its place in the grid, for ties */
 	double score;
 	double view[FIT_DIM];
 };
@@ -296,14 +298,50 @@ static void coarse_target_free(struct coarse_target *t)
 	rt_free(t->v);
 }
 
+/* Scores eyes [first, n) of w on the job's threads. */
+static void coarse_run(struct coarse_work *w, int first, int n)
+{
+	pthread_t threads[COARSE_MAX_THREADS];
+	int nt = w->job->threads < 1 ? 1 : w->job->threads > COARSE_MAX_THREADS ? COARSE_MAX_THREADS
+										 : w->job->threads;
+	int i, started = 0;
+
+	w->next = first;
+	w->n_eyes = n;
+	for (i = 1; i < nt; i++) {
+		if (rt_thread_start(&threads[i], coarse_worker, w) != 0)
+			break;
+		started++;
+	}
+	coarse_worker(w);
+	for (i = 1; i <= started; i++)
+		pthread_join(threads[i], NULL);
+}
+
+static int coarse_eye_cmp(const void *a, const void *b)
+{
+	const struct coarse_eye *x = a, *y = b;
+
+	if (x->score != y->score)
+		return x->score < y->score ? -1 : 1;
+	/* Equal scores in the grid's order: the same answer every time. */
+	return x->order < y->order ? -1 : x->order > y->order;
+}
+
+/* The second look: around each of the best COARSE_SECOND eyes, the
+ * neighbours at a spacing COARSE_SECOND_SHRINK times finer (a near eye's
+ * view changes faster with its position than the first grid's steps). */
+#define COARSE_SECOND 6
+#define COARSE_SECOND_SHRINK 2.5
+
 int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
 		      const struct image *sub, double radius, double spacing,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)
 {
 	struct coarse_target t;
 	struct coarse_work w;
-	pthread_t threads[COARSE_MAX_THREADS];
-	int steps = (int)floor(radius / spacing), i, j, k, n = 0, started = 0, nt;
+	int steps = (int)floor(radius / spacing), i, j, k, n = 0, m, first_n;
+	size_t cap = (size_t)(2 * steps + 1) * (2 * steps + 1) * (2 * steps + 1) + COARSE_SECOND * 27;
 	int rc;
 
 	if ((rc = coarse_target_make(&t, sub, d)) < 0) {
@@ -314,8 +352,7 @@ int fit_coarse_search(const struct grade_job *job, const struct camera_params *s
 	w.job = job;
 	w.start = start;
 	w.t = &t;
-	w.eyes = rt_reallocarray(NULL, (size_t)(2 * steps + 1) * (2 * steps + 1) * (2 * steps + 1),
-				 sizeof(*w.eyes));
+	w.eyes = rt_reallocarray(NULL, cap, sizeof(*w.eyes));
 	if (!w.eyes) {
 		coarse_target_free(&t);
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the camera fit");
@@ -328,30 +365,30 @@ int fit_coarse_search(const struct grade_job *job, const struct camera_params *s
 					continue;
 				if (e.z < 1.0 && !(k == 0 && e.z == start->eye.z))
 					continue;
+				w.eyes[n].order = n;
 				w.eyes[n++].eye = e;
 			}
-	w.n_eyes = n;
-	nt = job->threads < 1 ? 1 : job->threads > COARSE_MAX_THREADS ? COARSE_MAX_THREADS : job->threads;
-	for (i = 1; i < nt; i++) {
-		if (rt_thread_start(&threads[i], coarse_worker, &w) != 0)
-			break;
-		started++;
+	coarse_run(&w, 0, n);
+	qsort(w.eyes, (size_t)n, sizeof(*w.eyes), coarse_eye_cmp);
+	first_n = n;
+	for (m = 0; m < COARSE_SECOND && m < first_n; m++)
+		for (i = -1; i <= 1; i++)
+			for (j = -1; j <= 1; j++)
+				for (k = -1; k <= 1; k++) {
+					double s2 = spacing / COARSE_SECOND_SHRINK;
+					struct vec3 e = vec3_add(w.eyes[m].eye, vec3_make(i * s2, j * s2, k * s2));
+					if ((i == 0 && j == 0 && k == 0) || e.z < 1.0)
+						continue;
+					w.eyes[n].order = n;
+					w.eyes[n++].eye = e;
+				}
+	coarse_run(&w, first_n, n);
+	qsort(w.eyes, (size_t)n, sizeof(*w.eyes), coarse_eye_cmp);
+	for (i = 0; i < n_out; i++) {
+		scores[i] = i < n ? w.eyes[i].score : INFINITY;
+		if (i < n)
+			memcpy(out[i], w.eyes[i].view, sizeof(out[i]));
 	}
-	coarse_worker(&w);
-	for (i = 1; i <= started; i++)
-		pthread_join(threads[i], NULL);
-	/* The best n_out, best first; equal scores in the grid's order. */
-	for (i = 0; i < n_out; i++)
-		scores[i] = INFINITY;
-	for (k = 0; k < n; k++)
-		for (i = 0; i < n_out; i++)
-			if (w.eyes[k].score < scores[i]) {
-				memmove(scores + i + 1, scores + i, sizeof(*scores) * (size_t)(n_out - i - 1));
-				memmove(out + i + 1, out + i, sizeof(*out) * (size_t)(n_out - i - 1));
-				scores[i] = w.eyes[k].score;
-				memcpy(out[i], w.eyes[k].view, sizeof(out[i]));
-				break;
-			}
 	rt_free(w.eyes);
 	coarse_target_free(&t);
 	if (job->cancel && *job->cancel)

@@ -56,6 +56,11 @@ static void *grade_ids_rows(void *arg)
 	return NULL;
 }
 
+bool grade_primary_hit(const struct grade_job *job, const struct ray *r, double *t)
+{
+	return accel_intersect(job->scene->accel, r, 0.0, t) != NULL;
+}
+
 int grade_object_ids(const struct grade_job *job, int32_t *ids, struct diag *d)
 {
 	const struct scene *s = job->scene;
