@@ -20,11 +20,18 @@
  * colour changes by more than 8 levels within a pixel of it (an edge, a
  * checkerboard finer than the pixels towards the horizon, whose colours
  * any error of the camera shuffles) is a tie too. */
+#define CHECK_EDGE_TIES_MAX 0.3
+
 static void check_edge_ties(struct check_view *v)
 {
 	const int w = v->image.width, h = v->image.height;
 	const uint8_t *p = v->image.pixels;
+	uint8_t *edges = rt_calloc((size_t)w * (size_t)h, 1);
+	long n = 0;
 	int x, y, i, j, c;
+
+	if (!edges)
+		return;
 
 	for (y = 0; y < h; y++)
 		for (x = 0; x < w; x++) {
@@ -32,6 +39,7 @@ static void check_edge_ties(struct check_view *v)
 			bool edge = false;
 			if (v->ties[k])
 				continue;
+			edges[k] = 0;
 			for (j = -1; j <= 1 && !edge; j++)
 				for (i = -1; i <= 1 && !edge; i++) {
 					size_t q;
@@ -41,11 +49,18 @@ static void check_edge_ties(struct check_view *v)
 					for (c = 0; c < 3 && !edge; c++)
 						edge = abs((int)p[3 * k + c] - (int)p[3 * q + c]) > 8;
 				}
-			if (edge) {
-				v->ties[k] = 1;
-				v->n_ties++;
-			}
+			edges[k] = edge;
+			n += edge;
 		}
+	/* Not where edges are most of the image (a small one): what is left
+	 * would be too little to judge the shading by. */
+	if ((double)(v->n_ties + n) <= CHECK_EDGE_TIES_MAX * (double)w * (double)h) {
+		size_t k;
+		for (k = 0; k < (size_t)w * (size_t)h; k++)
+			v->ties[k] |= edges[k];
+		v->n_ties += n;
+	}
+	rt_free(edges);
 }
 
 int check_view_make(const struct check_reference *ref, const struct camera_params *p, int width,

@@ -25,10 +25,10 @@
  * (check_displacement) and comes at least CHECK_MOVED_GAIN dB nearer
  * the submission. */
 #define CHECK_MOVED_PIXELS 1.5
-#define CHECK_MOVED_GAIN 1.0
+#define CHECK_MOVED_GAIN 3.0
 /* ... and reaches at least this: below it, the camera is as unknown as
  * before (another scene, another renderer). */
-#define CHECK_MOVED_PSNR 18.0
+#define CHECK_MOVED_PSNR 20.0
 /* The fit's precision, in pixels: its ties allow for that much. */
 #define CHECK_FIT_PIXELS 0.35
 
@@ -81,12 +81,12 @@ static void check_explain(struct check_result *res, const struct grade_figures *
 
 /* Whether the first cause only moves the pixels about (a mirror, a flip,
  * a transposition): another camera may explain the image as well. */
-static bool check_first_is_geometric(const struct check_result *res)
+static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n)
 {
-	const struct grade_rank *r = &res->ranks[0];
+	const struct grade_rank *r = &ranks[0];
 	bool a = r->cause <= RT_CAUSE_TRANSPOSED, b = r->also != RT_CAUSE_NONE && r->also <= RT_CAUSE_TRANSPOSED;
 
-	return res->n_ranks > 0 && (a || b);
+	return n > 0 && (a || b);
 }
 
 /* How far camera b shows what camera a shows at its pixels, in pixels:
@@ -351,8 +351,10 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 	if ((rc = check_at(v, res, &res->fig, true, d)) < 0)
 		return rc;
 	res->verdict = res->fig.match ? CHECK_MATCH : CHECK_DIFFERS;
-	if (res->fig.match || !ref->fit ||
-	    (res->explained == CHECK_EXPLAINED && !check_first_is_geometric(res)))
+	/* An image a cause explains keeps it, a mirror or a flip too (a
+	 * camera can make a mirror image only of a symmetric scene, whose
+	 * mirror image is then the same). */
+	if (res->fig.match || !ref->fit || res->explained == CHECK_EXPLAINED)
 		return check_objects(ref, res, d);
 	/* The image does not fit the camera given: find the one that took
 	 * it, and judge it there. */
@@ -363,9 +365,9 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 	best_given = res->n_ranks > 0 ? res->ranks[0].fig.psnr : res->fig.psnr;
 	if ((rc = check_fit(ref, v, res, d)) < 0)
 		return rc;
-	/* A mirror or a flip that explains the image stays, unless the
-	 * camera found does as well. */
-	if (res->moved && was == CHECK_EXPLAINED && res->fig_found.psnr < best_given) {
+	/* A mirror or a flip that comes close stays, unless the camera
+	 * found comes as close. */
+	if (res->moved && check_first_is_geometric_of(given, n_given) && res->fig_found.psnr < best_given) {
 		res->moved = false;
 		check_view_free(&res->found);
 	}

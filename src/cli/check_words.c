@@ -90,6 +90,11 @@ void check_diagnosis(const struct check_reference *ref, const struct check_resul
 	const struct grade_figures *plain = res->moved ? &res->fig_found : &res->fig;
 
 	check_camera_words(res, cam, sizeof(cam));
+	if (res->floor_textured && res->verdict != CHECK_UNREADABLE) {
+		size_t n = strlen(cam);
+		snprintf(cam + n, sizeof(cam) - n, "%sthe floor is textured, not the reference's two-colour "
+			 "checker: judged without it; ", n ? "" : "");
+	}
 	if (res->verdict == CHECK_UNREADABLE) {
 		snprintf(buf, size, "unreadable: %s", res->error.msg);
 		return;

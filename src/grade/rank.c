@@ -500,7 +500,8 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 	qsort(out, *n, sizeof(out[0]), grade_rank_cmp);
 	grade_mark_first_equal(out, *n);
 out:
-	for (k = 0; k < g.n_todo; k++) {
+	/* Every slot: a failure can leave one allocated past n_todo. */
+	for (k = 0; k < g.cap && g.imgs && g.timgs; k++) {
 		image_free(&g.imgs[k]);
 		image_free(&g.timgs[k]);
 	}

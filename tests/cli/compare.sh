@@ -82,8 +82,12 @@ head -c 300 "$I/ref.png" >"$I/truncated.png"
 expect_error truncated-png 1 'damaged or truncated' compare -q -s 30 "$SCENE" "$I/truncated.png"
 expect_error missing 1 'nosuch.png: cannot open' compare -q -s 30 "$SCENE" nosuch.png
 expect_error directory 1 'is a directory' compare -q -s 30 "$SCENE" "$I"
-expect_error wrong-size 1 'the image is 30x30, the reference 32x32' compare -q -s 32 "$SCENE" "$I/ref.png"
-expect_error wrong-size-diff 1 'the image is 30x30' compare -q -s 32 --diff d.png "$SCENE" "$I/ref.png"
+# Another size than the scene's: compared at its own, with a note.
+run compare -q -s 32 "$SCENE" "$I/ref.png"
+check other-size-matches [ "$rc" -eq 0 ]
+check other-size-note grep -qF 'note: the image is 30x30, the scene'"'"'s size 32x32: compared with the reference rendered at 30x30' "$T/out"
+run compare -q -s 32 --diff d.png "$SCENE" "$I/ref.png"
+check other-size-diff [ "$rc" -eq 0 ] && [ -s "$T/wd/d.png" ]
 expect_error scene-error 1 'cannot open' compare -q -s 30 nosuch.txt "$I/ref.png"
 
 # A mistake found: the image mirrored (written by make_images.py's BMP
@@ -239,8 +243,9 @@ clean_wd
 run grade -q -s 30 --scene "$SCENE" -o report.html --csv rows.csv "$I/ref.png" "$I/mirrored.ppm" \
 	"$I/truncated.bmp" "$I/other.png"
 check grade-exit [ "$rc" -eq 3 ]
-check grade-rows [ "$(grep -c . "$T/out")" -eq 5 ]
-check grade-row-match grep -q 'ref.png  *match  *inf  matches the reference$' "$T/out"
+check grade-rows [ "$(grep -c . "$T/out")" -eq 6 ]
+check grade-row-match grep -q 'ref.png  *match  *inf  *10  matches the reference$' "$T/out"
+check grade-summary grep -q '^class: 4 images of 4 students: 1 match, 2 differ, 1 unreadable; by outcome: match 1, mirrored 1, unreadable 1, ' "$T/out"
 check grade-row-mirrored grep -q 'mirrored.ppm  *differs .*matches the reference with the image mirrored' "$T/out"
 check grade-row-unreadable grep -q 'truncated.bmp  *unreadable .*truncated BMP' "$T/out"
 check grade-csv-lines [ "$(wc -l <"$T/wd/rows.csv")" -eq 5 ]
@@ -259,5 +264,8 @@ check grade-report-offline bash -c "! grep -qE 'src=\"(https?:|//)' '$T/wd/repor
 run grade -q -s 30 --scene "$SCENE" "$I/ref.png" "$I/ref.bmp"
 check grade-all-match [ "$rc" -eq 0 ]
 expect_status grade-report-unwritable 1 grade -q -s 30 --scene "$SCENE" -o /nonexistent/r.html "$I/ref.png"
+# ... found before the first image is graded: no row printed.
+check grade-unwritable-first [ ! -s "$T/out" ]
+check grade-unwritable-says grep -q "cannot write --output '/nonexistent/r.html'.*checked before grading" "$T/err"
 
 finish

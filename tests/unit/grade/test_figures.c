@@ -117,31 +117,31 @@ static void test_grade_transforms(void **state)
 	static const uint8_t flipped[12] = { 7, 8, 9, 10, 11, 12, 1, 2, 3, 4, 5, 6 };
 	static const uint8_t transposed[12] = { 1, 2, 3, 7, 8, 9, 4, 5, 6, 10, 11, 12 };
 	static const uint8_t swapped[12] = { 3, 2, 1, 6, 5, 4, 9, 8, 7, 12, 11, 10 };
+	static const uint8_t half_turn[12] = { 10, 11, 12, 7, 8, 9, 4, 5, 6, 1, 2, 3 };
+	static const uint8_t flipped_swapped[12] = { 9, 8, 7, 12, 11, 10, 3, 2, 1, 6, 5, 4 };
 	struct image ia, t;
 	struct diag d;
 
 	(void)state;
 	image_of(&ia, 2, 2, a);
-	assert_int_equal(grade_transform(&ia, RT_CAUSE_MIRRORED, &t, &d), 0);
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_MIRROR, &t, &d), 0);
 	assert_memory_equal(t.pixels, mirrored, 12);
 	image_free(&t);
-	assert_int_equal(grade_transform(&ia, RT_CAUSE_UPSIDE_DOWN, &t, &d), 0);
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_FLIP, &t, &d), 0);
 	assert_memory_equal(t.pixels, flipped, 12);
 	image_free(&t);
-	assert_int_equal(grade_transform(&ia, RT_CAUSE_TRANSPOSED, &t, &d), 0);
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_TRANSPOSE, &t, &d), 0);
 	assert_memory_equal(t.pixels, transposed, 12);
 	image_free(&t);
-	assert_int_equal(grade_transform(&ia, RT_CAUSE_RED_BLUE, &t, &d), 0);
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_RED_BLUE, &t, &d), 0);
 	assert_memory_equal(t.pixels, swapped, 12);
 	image_free(&t);
-	/* sRGB: level 1 (0.00392) is 12.92 x = 0.0507 -> 13; 12 -> 0.0471 ->
-	 * 1.055 x^(1/2.4) - 0.055 = 0.2403 -> 61; with 1/2.2: 1 -> 0.0806 -> 21. */
-	assert_int_equal(grade_transform(&ia, RT_CAUSE_GAMMA, &t, &d), 0);
-	assert_int_equal(t.pixels[0], 13);
-	assert_int_equal(t.pixels[11], 61);
+	/* Two at once: a half turn, and BMP's rows and bytes both wrong. */
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_MIRROR | GRADE_MAP_FLIP, &t, &d), 0);
+	assert_memory_equal(t.pixels, half_turn, 12);
 	image_free(&t);
-	assert_int_equal(grade_transform_gamma(&ia, false, &t, &d), 0);
-	assert_int_equal(t.pixels[0], 21);
+	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_FLIP | GRADE_MAP_RED_BLUE, &t, &d), 0);
+	assert_memory_equal(t.pixels, flipped_swapped, 12);
 	image_free(&t);
 	image_free(&ia);
 }
@@ -176,7 +176,7 @@ static void test_grade_diff_image(void **state)
 static void test_grade_allocation_failures(void **state)
 {
 	struct scene *s = support_parse(course_scene);
-	struct grade_rank ranks[RT_CAUSE_COUNT];
+	struct grade_rank ranks[GRADE_MAX_RANKS];
 	struct camera_params p;
 	struct grade_job job;
 	struct camera cam;
@@ -199,7 +199,7 @@ static void test_grade_allocation_failures(void **state)
 	job.settings.clamp = RT_CLAMP_LEVEL;
 	job.threads = 2;
 	assert_int_equal(grade_render_reference(&job, &ref, &d), 0);
-	assert_int_equal(grade_transform(&ref, RT_CAUSE_RED_BLUE, &sub, &d), 0);
+	assert_int_equal(grade_transform_map(&ref, GRADE_MAP_RED_BLUE, &sub, &d), 0);
 	assert_int_equal(image_encode_png(&sub, &png, &png_len, &d), 0);
 	assert_int_equal(grade_render_truncated(&job, &tref, &d), 0);
 	/* floor(255 c) is round(255 c) or one less, and not always the same. */
@@ -245,7 +245,7 @@ static void test_grade_wrap_both_ways(void **state)
 	struct grade_job job;
 	struct camera cam;
 	struct image round, trunc;
-	int id = RT_CAUSE_NEVER_CLAMP * GRADE_VARIANTS, plain = GRADE_PLAIN_RENDER;
+	struct grade_variant wrap, plain;
 	struct diag d;
 
 	(void)state;
@@ -260,10 +260,12 @@ static void test_grade_wrap_both_ways(void **state)
 	job.threads = 1;
 	assert_int_equal(image_alloc(&round, 1, 1, &d), 0);
 	assert_int_equal(image_alloc(&trunc, 1, 1, &d), 0);
-	assert_int_equal(grade_render_causes(&job, &id, &round, &trunc, 1, NULL, 0, &d), 0);
+	assert_true(grade_variant_of(&job, RT_CAUSE_NEVER_CLAMP, 0, &wrap));
+	grade_variant_plain(&job, &plain);
+	assert_int_equal(grade_render_variants(&job, &wrap, &round, &trunc, 1, NULL, 0, &d), 0);
 	assert_int_equal(round.pixels[0], 127);
 	assert_int_equal(trunc.pixels[0], 126);
-	assert_int_equal(grade_render_causes(&job, &plain, &round, &trunc, 1, NULL, 0, &d), 0);
+	assert_int_equal(grade_render_variants(&job, &plain, &round, &trunc, 1, NULL, 0, &d), 0);
 	assert_int_equal(round.pixels[0], 255);
 	assert_int_equal(trunc.pixels[0], 255);
 	image_free(&round);
