@@ -141,9 +141,10 @@ int grade_tie_mask(const struct grade_job *job, const struct image *ref, double 
  * When no single cause explains sub, pairs of the likeliest causes (and
  * the compositions of two transforms: a half turn, a flip with red and
  * blue swapped) are ranked too.  Causes whose figures equal the first's
- * are marked first_equal.  *n is their number (<= GRADE_MAX_RANKS). */
+ * are marked first_equal.  The pixels skip marks (ties; may be NULL) are
+ * left out of every figure.  *n is their number (<= GRADE_MAX_RANKS). */
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
-		      const struct image *tref, const struct image *sub,
+		      const struct image *tref, const struct image *sub, const uint8_t *skip,
 		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d);
 
 /* The image of a ranked cause (or pair), at full size (for the report). */
