@@ -286,6 +286,7 @@ mistakecheck: all
 	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_DATA_DIR)
 comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
+	@tests/cli/compare_order.sh $(BUILD)/whitted
 reportcheck: all
 	@tests/cli/report.sh $(BUILD)/whitted
 viewer-e2e: all plugins
