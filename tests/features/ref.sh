@@ -41,5 +41,8 @@ ref glass-prism "$top/tests/scenes/glass-prism.txt" --recursion 6 --glass 1:1.5:
 ref glass-quadric "$S/quadric.txt" --recursion 5 --glass 1:1.4:0.7
 ref glass-all "$top/tests/scenes/glass-cube.txt" --recursion 5 --glass 1,3:1.2:0.5,4 --samples 2 \
 	--floor-texture "$T/white.bmp"
+# Boxes whose entry and exit are one t: the flat tiles seen from 1e17
+# away (portablecheck compares every walk there too).
+ref flat-tiles-far "$top/tests/scenes/flat-tiles.txt" --eye 0,-1e17,20 --look 0,0,20 --fov 6e-14
 echo "ref: $pass passed, $fail failed, 0 skipped"
 [ "$fail" -eq 0 ]
