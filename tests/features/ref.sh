@@ -2,10 +2,12 @@
 # issue 14's features against the independent reference renderer
 # (tests/reference/ref_render.py, written from README's rules apart from
 # whitted): --samples under both clamp modes, --floor-texture on the three
-# kinds of floor (BMP and PNG, one texture or two), --glass on a sphere, a
-# lifted cube, a prism, a clipped quadric and several objects at once (not
-# the nearfar pyramid, whose base lies in the floor's plane: a tie),
-# each within imgcmp's gate at 40x40.  Ends with "ref: N passed, N failed, N skipped".
+# kinds of floor (BMP and PNG, one texture or two, lights that fall off),
+# --glass on a sphere, a lifted cube, a prism, a clipped quadric and
+# several objects at once (not the nearfar pyramid, whose base lies in the
+# floor's plane: a tie), boxes met at one t (flat tiles far away), each
+# within imgcmp's gate at 40x40.  Ends with "ref: N passed, N failed, N
+# skipped".
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd)
 B=${BUILD:-$top/build}
@@ -34,6 +36,10 @@ ref samples4-spot "$S/spot.txt" --samples 4
 ref texture-classic "$S/scene.txt" --floor-texture "$T/white.bmp,$T/black.png" --eye 30,-120,140
 ref texture-nearfar "$S/nearfar.txt" --floor-texture "$T/white.png,$T/black.png"
 ref texture-pyramid-black "$S/pyramid.txt" --floor-texture ",$T/black.png"
+# Lights that fall off (exp(-0.1) to exp(-2) over the scene) on a
+# textured floor, whose highlight keeps the cell's colour: the falloff
+# scales each light's whole term, diffuse and highlight.
+ref texture-falloff "$S/falloff.txt" --floor-texture "$T/white.png,$T/black.png"
 ref texture-floor-7 "$S/shadows.txt" --floor 300,7 --floor-texture "$T/white.bmp" --eye 20,-80,120
 ref glass-sphere "$S/sphere.txt" --recursion 5 --glass 2:1.5:0.8
 ref glass-cube "$top/tests/scenes/glass-cube.txt" --recursion 6 --glass 1:1.5:0.8
