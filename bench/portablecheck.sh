@@ -90,6 +90,29 @@ for j in 1 2; do
 	same_as_default "single rays (WHITTED_PACKETS=0, far eye)" "$T/single.ppm" \
 		env WHITTED_PACKETS=0 "$W" -q -j $j -s 48 $far -o "$T/single.ppm" "$scene"
 done
+# The ray counts too (--stats), where a light lies in the floor's plane
+# (N.L exactly 0 over the floor: no light and no shadow ray there), at
+# 200 px: one ray at a time, packets by default and forced in each walk.
+scene=tests/scenes/light-in-floor-plane.txt
+k=0
+for how in "WHITTED_PACKETS=0" "WHITTED_PACKETS=" "WHITTED_PACKETS=1" \
+	"WHITTED_PACKETS=1 WHITTED_ISA=sse2" "WHITTED_PACKETS=1 WHITTED_ISA=avx2"; do
+	k=$((k + 1))
+	# shellcheck disable=SC2086
+	env $how "$W" -q --stats -s 200 -o "$T/plane$k.ppm" "$scene" 2>&1 |
+		sed -n 's/^rays: *\(.*\), [0-9.]* M rays\/s$/\1/p' >"$T/rays$k"
+	if [ ! -s "$T/rays$k" ]; then
+		echo "portablecheck: $scene under $how: no ray counts"
+		fail=$((fail + 1))
+	elif [ $k -gt 1 ]; then
+		if cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" && cmp -s "$T/rays1" "$T/rays$k"; then
+			pass=$((pass + 1))
+		else
+			echo "portablecheck: $scene under $how: $(cat "$T/rays$k"), one ray at a time $(cat "$T/rays1")$(cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" || echo ', another image')"
+			fail=$((fail + 1))
+		fi
+	fi
+done
 echo "portablecheck: walks compared with the portable build's: $(sort -u "$T/walks" | tr '\n' ' ')portable"
 echo "portablecheck: $pass passed, $fail failed, 0 skipped"
 [ $fail -eq 0 ] && [ $pass -gt 0 ]
