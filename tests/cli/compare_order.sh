@@ -10,11 +10,12 @@
 #    on every pixel (30 px) and on a sample (80 px).
 #  - The first cause is never the sample's estimate: it is rendered again
 #    on every pixel (no "~" before its figure, "estimated": false), for a
-#    cause that explains the image and for one that does not.
+#    cause that explains the image and, with 3 levels of noise added to
+#    every seventh pixel, for one that comes close without explaining it
+#    (a finite figure, which a sample's estimate would not match).
 #  - A cause of several forms is ranked by the form nearest the image: a
 #    light behind the surface darkening it (the signed diffuse, the third
-#    form) and rays through the pixels' top-left corners (the first of
-#    four) are named first.
+#    form) is named first.
 # Usage: compare_order.sh [WHITTED]
 SUITE=compareorder
 . "$(dirname "$0")/lib.sh"
@@ -60,11 +61,20 @@ assert r["cause"] == "mirrored or floor-swapped", r["cause"]
 done
 
 # The first cause rendered on every pixel (96 px: the ranking samples).
-# first_full NAME SCENE MISTAKE WANT [EXPLAINS]: the first cause is WANT,
-# not estimated, with no "~" in the text, and explains the image or not.
+# first_full NAME SCENE MISTAKE WANT EXPLAINS [noisy]: the first cause is
+# WANT, not estimated, with no "~" in the text, and explains the image or
+# not (True, False); "noisy" adds 3 to the red of every seventh pixel.
 first_full() {
-	local name=$1 scene=$2 mistake=$3 want=$4 explains=$5
+	local name=$1 scene=$2 mistake=$3 want=$4 explains=$5 noisy=${6:-}
 	python3 "$REF_RENDER" "$scene" "$I/$name.ppm" --size 96 --mistake "$mistake"
+	[ -z "$noisy" ] || python3 -c '
+import sys
+d = bytearray(open(sys.argv[1], "rb").read())
+start = d.index(b"255\n") + 4
+for k in range(start, len(d), 21):
+    d[k] = min(255, d[k] + 3)
+open(sys.argv[1], "wb").write(d)
+' "$I/$name.ppm"
 	run compare -q -s 96 --json "$scene" "$I/$name.ppm"
 	json_check "$name: first cause $want, on every pixel" "$T/out" "
 assert j['first'] == ['$want'], j['first']
@@ -75,8 +85,9 @@ assert any(x['estimated'] for x in c[1:]), 'no cause after the first was estimat
 	check "$name: no '~' on the first cause" grep -qE '^  1\. [^~]*dB' "$T/out"
 }
 first_full no-shadows "$ROOT/scenes/scene.txt" no-shadows no-shadows True
-first_full corners "$ROOT/scenes/scene.txt" pixel-corners pixel-corners False
+first_full no-shadows-noisy "$ROOT/scenes/scene.txt" no-shadows no-shadows False noisy
+first_full no-shadows-noisy-2 "$ROOT/scenes/shadows.txt" no-shadows no-shadows False noisy
 # A cause's forms: the nearest one counts.
 first_full light-behind-signed "$ROOT/scenes/shadows.txt" light-behind-signed light-behind True
-first_full corners-shadows "$ROOT/scenes/shadows.txt" pixel-corners pixel-corners False
+first_full light-behind-signed-noisy "$ROOT/scenes/shadows.txt" light-behind-signed light-behind False noisy
 finish
