@@ -8,7 +8,7 @@ SUITE=valgrind
 . "$(dirname "$0")/cli/lib.sh"
 if ! command -v valgrind >/dev/null; then
 	echo "valgrind: valgrind is not installed"
-	echo "valgrind: 0 passed, 1 failed"
+	echo "valgrind: 0 passed, 1 failed, 0 skipped"
 	exit 1
 fi
 VG="valgrind -q --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=all --error-exitcode=99"
