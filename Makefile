@@ -64,7 +64,7 @@ CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
 FAST_PKGS := libisal-dev libzip-dev
-CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
+CHECK_PKGS := $(CORE_PKGS) libzip-dev libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
 BENCH_PKGS := bc
@@ -313,6 +313,7 @@ mistakecheck: all
 comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
 	@tests/cli/compare_order.sh $(BUILD)/whitted
+	@tests/cli/compare_real.sh $(BUILD)/whitted
 reportcheck: all
 	@tests/cli/report.sh $(BUILD)/whitted
 viewer-e2e: all plugins
