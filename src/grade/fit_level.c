@@ -334,6 +334,7 @@ void fit_level_free(struct fit_level *l)
 
 int fit_scratch_alloc(struct fit_scratch *s, const struct fit_level *l, struct diag *d)
 {
+	s->points = NULL;
 	s->cells = rt_reallocarray(NULL, (size_t)l->n_cells * 3, sizeof(float));
 	s->tmp = rt_reallocarray(NULL, (size_t)l->n_cells * 3, sizeof(float));
 	if (!s->cells || !s->tmp) {
