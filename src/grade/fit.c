@@ -509,7 +509,7 @@ static double fit_local_cmaes(struct fit_batch *b, double *x, double pivot, cons
 
 /* The middle of the scene's objects (the floor and unbounded shapes
  * aside): the point the alias moves keep in view. */
-static struct vec3 fit_scene_centre(const struct scene *s)
+struct vec3 fit_scene_centre(const struct scene *s)
 {
 	struct vec3 sum = vec3_make(0.0, 0.0, 0.0);
 	size_t i, n = 0;
@@ -650,8 +650,8 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 	for (k = 0; k < n; k++)
 		fit_view_of(&starts[k], xs + k * FIT_DIM);
 	if ((rc = fit_coarse_search(b->job, &starts[0], sub, fit_env("FIT_RADIUS", 160),
-				    fit_env("FIT_SPACING", 40), (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs,
-				    FIT_COARSE_KEEP, d)) < 0)
+				    fit_env("FIT_SPACING", 40), fit_scene_centre(b->job->scene),
+				    (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs, FIT_COARSE_KEEP, d)) < 0)
 		return rc;
 	n += FIT_COARSE_KEEP;
 	fit_batch_run(b, xs, fs, n);

@@ -112,7 +112,7 @@ static void test_causes_combine(void **state)
 static void test_causes_other_floor_in_the_trace(void **state)
 {
 	struct job_setup j;
-	struct shade_floor same = { 500.0, 20.0, -500.0, -500.0 }, endless = { INFINITY, 20.0, -500.0, -500.0 };
+	struct shade_floor same = { 500.0, 20.0, -500.0, -500.0, 0.0, 0.0 }, endless = { INFINITY, 20.0, -500.0, -500.0, 0.0, 0.0 };
 	struct render_settings rs = { 4, RT_CLAMP_LEVEL };
 	int k;
 
