@@ -381,7 +381,7 @@ out:
 /* The hypotheses the first stages carry: the stage-0 refinements of the
  * best starting cameras, each refined on the next levels until the one
  * that fits best there is clear. */
-#define FIT_HYPOTHESES 8
+#define FIT_HYPOTHESES 5
 #define FIT_HYPOTHESIS_STAGES 3
 /* The hypotheses whose floor aliases are tried. */
 #define FIT_ALIAS_HYPOTHESES 3
@@ -643,7 +643,7 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 			   double *hf, long *evals, struct diag *d)
 {
 	double xs[(8 + FIT_COARSE_KEEP) * FIT_DIM], fs[8 + FIT_COARSE_KEEP], cs[FIT_COARSE_KEEP];
-	int n = n_starts > 8 ? 8 : n_starts, tries = (int)fit_env("FIT_TRIES", 8), t, k, rc;
+	int n = n_starts > 8 ? 8 : n_starts, tries = (int)fit_env("FIT_TRIES", 6), t, k, rc;
 
 	for (k = 0; k < FIT_HYPOTHESES; k++)
 		hf[k] = INFINITY;
@@ -818,6 +818,13 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			n_hyp = n_hyp > 0 ? 1 : 0;
 		out->evals += evals;
 		out->score = hf[0];
+		{
+			/* The given camera on the same level, for the caller to
+			 * weigh the fit by (grey: red and blue swapped alike). */
+			double v0[FIT_DIM];
+			fit_view_of(&starts[0], v0);
+			fit_batch_run(&batch, v0, &out->start_score, 1);
+		}
 		if (getenv("FIT_TRACE"))
 			fprintf(stderr, "fit: [%.2fs] stage %d (%d cells): %.3f after %ld evals  %.2f %.2f %.2f  %.3f %.3f %.3f %.3f\n",
 				fit_clock() - t_start, s, level.n_cells, hf[0], evals,

@@ -96,9 +96,8 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 		for (x = 0; x < n; x++) {
 			struct color c = color_clamp(col[x]);
 			float *o = img + 3 * (y * n + x);
-			o[0] = (float)(255.0 * c.r);
-			o[1] = (float)(255.0 * c.g);
-			o[2] = (float)(255.0 * c.b);
+			/* Grey, as the fit's levels are. */
+			o[0] = o[1] = o[2] = (float)(255.0 * (c.r + c.g + c.b) / 3.0);
 		}
 	}
 	fit_blur(img, tmp, n, n, 1.0);
@@ -288,7 +287,8 @@ static int coarse_target_make(struct coarse_target *t, const struct image *sub, 
 					for (c = 0; c < 3; c++)
 						s[c] += sub->pixels[3 * ((size_t)Y * sub->width + X) + c];
 			for (c = 0; c < 3; c++)
-				t->cells[3 * (y * t->w + x) + c] = (float)(s[c] / ((double)(x1 - x0) * (y1 - y0)));
+				t->cells[3 * (y * t->w + x) + c] = (float)((s[0] + s[1] + s[2]) /
+									   (3.0 * (x1 - x0) * (y1 - y0)));
 			t->u[y * t->w + x] = 0.5 * (x0 + x1);
 			t->v[y * t->w + x] = 0.5 * (y0 + y1);
 		}

@@ -108,7 +108,7 @@ static void test_grade_objects_figures(void **state)
 
 static void test_grade_diff_picture(void **state)
 {
-	static const uint8_t blue[3] = { 40, 90, 255 }, cyan[3] = { 0, 230, 230 };
+	static const uint8_t blue[3] = { 30, 50, 110 }, cyan[3] = { 0, 230, 230 };
 	struct world w;
 	struct image sub, out;
 	uint8_t ties[41 * 41] = { 0 }, differs[3] = { 0, 0, 1 };
