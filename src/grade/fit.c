@@ -739,6 +739,10 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		prev_sigma = st->sigma;
 		if ((rc = fit_stage_level(st, sub, hyp[0][FIT_FOV], &level, &pixel_deg, d)) < 0)
 			return rc;
+		/* The blurred levels see two bounces as well as all: a scene
+		 * inside a mirror sphere costs its full recursion only where
+		 * the image is sharp. */
+		level.recursion = s == 0 ? 2 : s <= 2 ? 3 : 0;
 		if ((rc = fit_batch_open(&batch, &level, job, &starts[0], d)) < 0) {
 			fit_level_free(&level);
 			return rc;

@@ -83,6 +83,8 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 	}
 	render_job_init(&rj, w->job->scene, &cam, 1);
 	rj.settings = w->job->settings;
+	/* Two bounces: the coarse look does not see more (fit.c's levels). */
+	rj.settings.recursion = rj.settings.recursion < 2 ? rj.settings.recursion : 2;
 	memset(&counts, 0, sizeof(counts));
 	render_tree_unbound(&tree, &counts);
 	for (y = 0; y < n; y++) {
@@ -341,9 +343,11 @@ static int coarse_eye_cmp(const void *a, const void *b)
 #define COARSE_SECOND_SHRINK 2.5
 
 /* The second grid: eyes around the scene's middle, looking at it, at
- * distances about the start's, from azimuths either side of the start's
- * and elevations from the floor up (a student turns the camera to keep
- * the objects in view). */
+ * distances about the start's, from azimuths up to 60 degrees either side
+ * of the start's and elevations from the floor up (a student turns the
+ * camera to keep the objects in view).  Not all round: the checkerboard
+ * looks the same turned by a right angle, and the views from the other
+ * sides are false friends more often than true ones. */
 static const double coarse_orbit_dists[] = { 0.6, 0.85, 1.15, 1.6 };
 static const double coarse_orbit_azimuths[] = { -60, -40, -20, 0, 20, 40, 60 };
 static const double coarse_orbit_elevations[] = { 3, 12, 24, 38, 55 };
