@@ -383,6 +383,10 @@ out:
  * that fits best there is clear. */
 #define FIT_HYPOTHESES 5
 #define FIT_HYPOTHESIS_STAGES 3
+/* ... and the best two of them on, through the sharper levels up to this
+ * stage: a view from another side (the checkerboard turned a right angle)
+ * can look as near as the right one while the image is still blurred. */
+#define FIT_PAIR_STAGES 5
 /* The hypotheses whose floor aliases are tried. */
 #define FIT_ALIAS_HYPOTHESES 3
 
@@ -739,10 +743,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		prev_sigma = st->sigma;
 		if ((rc = fit_stage_level(st, sub, hyp[0][FIT_FOV], &level, &pixel_deg, d)) < 0)
 			return rc;
-		/* The blurred levels see two bounces as well as all: a scene
-		 * inside a mirror sphere costs its full recursion only where
-		 * the image is sharp. */
-		level.recursion = s == 0 ? 2 : s <= 2 ? 3 : 0;
+
 		if ((rc = fit_batch_open(&batch, &level, job, &starts[0], d)) < 0) {
 			fit_level_free(&level);
 			return rc;
@@ -786,7 +787,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			for (k = 0; k < n_hyp && rc == 0; k++) {
 				hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
 					       st->generations, &evals, d, &rc);
-				if (rc == 0 && s == FIT_LAST_ALIAS_STAGE && n_hyp == 1 &&
+				if (rc == 0 && s == FIT_LAST_ALIAS_STAGE &&
 				    fit_final_alias(&batch, hyp[k], &hf[k], &evals))
 					hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
 						       st->generations, &evals, d, &rc);
@@ -818,8 +819,10 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 				pivot[0] = pivot[k];
 				pivot[k] = tp;
 			}
-		if (s + 1 >= FIT_HYPOTHESIS_STAGES)
+		if (s + 1 >= FIT_PAIR_STAGES)
 			n_hyp = n_hyp > 0 ? 1 : 0;
+		else if (s + 1 >= FIT_HYPOTHESIS_STAGES && n_hyp > 2)
+			n_hyp = 2;
 		out->evals += evals;
 		out->score = hf[0];
 		{

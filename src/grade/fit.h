@@ -30,6 +30,12 @@ enum { FIT_ORBIT_YAW, FIT_ORBIT_PITCH, FIT_TURN_ROLL, FIT_PAN_X, FIT_PAN_Y, FIT_
 void fit_view_move(const double v[FIT_DIM], const double q[FIT_DIM], double pivot,
 		   double out[FIT_DIM]);
 
+/* What the fit compares of a colour (levels 0..255): grey, |red - blue|
+ * and green against their mean, the same when red and blue are swapped
+ * (a BMP's byte order does not move the camera), yet telling a red sphere
+ * from a green one of the same grey. */
+void fit_colour(double r, double g, double b, float out[3]);
+
 /* A level: cells, each the mean of ss x ss pixels of the full image (the
  * submission's pixels there, and the candidate's colours of the rays
  * through those very pixels, so that the true camera gives the target

@@ -83,8 +83,7 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 	}
 	render_job_init(&rj, w->job->scene, &cam, 1);
 	rj.settings = w->job->settings;
-	/* Two bounces: the coarse look does not see more (fit.c's levels). */
-	rj.settings.recursion = rj.settings.recursion < 2 ? rj.settings.recursion : 2;
+
 	memset(&counts, 0, sizeof(counts));
 	render_tree_unbound(&tree, &counts);
 	for (y = 0; y < n; y++) {
@@ -98,8 +97,7 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 		for (x = 0; x < n; x++) {
 			struct color c = color_clamp(col[x]);
 			float *o = img + 3 * (y * n + x);
-			/* Grey, as the fit's levels are. */
-			o[0] = o[1] = o[2] = (float)(255.0 * (c.r + c.g + c.b) / 3.0);
+			fit_colour(255.0 * c.r, 255.0 * c.g, 255.0 * c.b, o);
 		}
 	}
 	fit_blur(img, tmp, n, n, 1.0);
@@ -285,12 +283,15 @@ static int coarse_target_make(struct coarse_target *t, const struct image *sub, 
 			int y0 = (int)((long)y * sub->height / t->h), y1 = (int)((long)(y + 1) * sub->height / t->h);
 			double s[3] = { 0.0, 0.0, 0.0 };
 			for (Y = y0; Y < y1; Y++)
-				for (X = x0; X < x1; X++)
+				for (X = x0; X < x1; X++) {
+					const uint8_t *q = sub->pixels + 3 * ((size_t)Y * sub->width + X);
+					float f[3];
+					fit_colour(q[0], q[1], q[2], f);
 					for (c = 0; c < 3; c++)
-						s[c] += sub->pixels[3 * ((size_t)Y * sub->width + X) + c];
+						s[c] += f[c];
+				}
 			for (c = 0; c < 3; c++)
-				t->cells[3 * (y * t->w + x) + c] = (float)((s[0] + s[1] + s[2]) /
-									   (3.0 * (x1 - x0) * (y1 - y0)));
+				t->cells[3 * (y * t->w + x) + c] = (float)(s[c] / ((double)(x1 - x0) * (y1 - y0)));
 			t->u[y * t->w + x] = 0.5 * (x0 + x1);
 			t->v[y * t->w + x] = 0.5 * (y0 + y1);
 		}

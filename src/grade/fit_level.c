@@ -103,6 +103,13 @@ void fit_view_move(const double v[FIT_DIM], const double q[FIT_DIM], double pivo
 	fit_view_of(&p, out);
 }
 
+void fit_colour(double r, double g, double b, float out[3])
+{
+	out[0] = (float)((r + g + b) / 3.0);
+	out[1] = (float)fabs(r - b);
+	out[2] = (float)(g - 0.5 * (r + b));
+}
+
 static int fit_level_alloc(struct fit_level *l, int n_cells, int ss, struct diag *d)
 {
 	size_t ns = (size_t)n_cells * (size_t)ss * (size_t)ss;
@@ -201,16 +208,18 @@ int fit_level_grid(struct fit_level *l, const struct image *sub, int w, int h, i
 					int px = x0 + (int)((i + 0.5) * (x1 - x0) / ss);
 					int py = y0 + (int)((j + 0.5) * (y1 - y0) / ss);
 					const uint8_t *q = sub->pixels + 3 * ((size_t)py * (size_t)sub->width + (size_t)px);
+					float f[3];
 					l->sx[k] = px;
 					l->sy[k] = py;
-					s[0] += q[0];
-					s[1] += q[1];
-					s[2] += q[2];
+					/* Each pixel's, then their mean: as the
+					 * candidate's cells are made. */
+					fit_colour(q[0], q[1], q[2], f);
+					s[0] += f[0];
+					s[1] += f[1];
+					s[2] += f[2];
 				}
-			/* Grey: the fit looks at shapes, not colours (an image
-			 * with red and blue swapped has the same camera). */
 			for (i = 0; i < 3; i++)
-				l->target[3 * (y * w + x) + i] = (float)((s[0] + s[1] + s[2]) / (3.0 * ss * ss));
+				l->target[3 * (y * w + x) + i] = (float)(s[i] / (ss * ss));
 		}
 	if (sigma > 0.0) {
 		if (!(tmp = rt_reallocarray(NULL, (size_t)w * (size_t)h * 3, sizeof(*tmp)))) {
@@ -237,8 +246,7 @@ int fit_level_pixels(struct fit_level *l, const struct image *sub, const uint32_
 		const uint8_t *q = sub->pixels + 3 * (size_t)pixels[k];
 		l->sx[k] = (int32_t)(pixels[k] % (uint32_t)sub->width);
 		l->sy[k] = (int32_t)(pixels[k] / (uint32_t)sub->width);
-		l->target[3 * k] = l->target[3 * k + 1] = l->target[3 * k + 2] =
-			(float)((q[0] + q[1] + q[2]) / 3.0);
+		fit_colour(q[0], q[1], q[2], l->target + 3 * k);
 	}
 	return 0;
 }
@@ -312,11 +320,15 @@ int fit_level_patches(struct fit_level *l, const struct image *sub, int n, doubl
 					l->sx[k] = px;
 					l->sy[k] = py;
 					l->sw[k] = (float)(wk[(j + half) * FIT_PATCH + i + half] / wsum);
-					for (c = 0; c < 3; c++)
-						s[c] += l->sw[k] * q[c];
+					{
+						float f[3];
+						fit_colour(q[0], q[1], q[2], f);
+						for (c = 0; c < 3; c++)
+							s[c] += l->sw[k] * f[c];
+					}
 				}
 			for (c = 0; c < 3; c++)
-				l->target[3 * cell + c] = (float)((s[0] + s[1] + s[2]) / 3.0);
+				l->target[3 * cell + c] = (float)s[c];
 			cell++;
 		}
 	(void)per;
@@ -446,10 +458,11 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 			float *c = s->cells + 3 * ((k + i) / per);
 			struct color q = color_clamp(col[i]);
 			double wt = l->sw ? l->sw[k + i] : 1.0 / per;
-			float grey = (float)(255.0 * (q.r + q.g + q.b) / 3.0 * wt);
-			c[0] += grey;
-			c[1] += grey;
-			c[2] += grey;
+			float f[3];
+			fit_colour(255.0 * q.r, 255.0 * q.g, 255.0 * q.b, f);
+			c[0] += (float)(f[0] * wt);
+			c[1] += (float)(f[1] * wt);
+			c[2] += (float)(f[2] * wt);
 		}
 	}
 	if (l->h > 0)
