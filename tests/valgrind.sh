@@ -144,7 +144,7 @@ vg "compare another camera" 0 compare -q -s 32 -j 2 --json --diff d2.png "$ROOT/
 mkdir -p "$CI/class/Ada_1_assignsubmission_file_"
 cp "$CI/moved.png" "$CI/bmp24.bmp" "$CI/class/Ada_1_assignsubmission_file_/"
 (cd "$CI" && python3 -c 'import zipfile; z = zipfile.ZipFile("class.zip", "w"); z.write("class/Ada_1_assignsubmission_file_/bmp24.bmp"); z.close()')
-vg "grade a folder and a zip" 3 grade -q -s 72 -j 2 --scene "$ROOT/scenes/scene.txt" --scene "$ROOT/scenes/mirrors.txt" \
+vg "grade a folder and a zip" 3 grade -q -s 72 -j 2 --no-camera-fit --scene "$ROOT/scenes/scene.txt" --scene "$ROOT/scenes/mirrors.txt" \
 	--csv r2.csv -o r2.html "$CI/class" "$CI/class.zip"
 vg "grade with a report" 3 grade -q -s 72 -j 2 --scene "$ROOT/scenes/scene.txt" -o r.html --csv r.csv \
 	"$CI/topdown.bmp" "$CI/other.png" "$CI/truncated.bmp"
