@@ -139,8 +139,8 @@ for f in truncated.bmp truncated.ppm truncated-ascii.ppm bad-sample.ppm empty.pn
 done
 vg "compare another size" 0 compare -q -s 40 "$ROOT/scenes/scene.txt" "$CI/ascii.ppm"
 # The camera fit, the ties, the objects and grade's folders and zips.
-"$W" -q -s 32 --eye 30,-180,40 -o "$CI/moved.png" "$ROOT/scenes/scene.txt"
-vg "compare another camera" 0 compare -q -s 32 -j 2 --json --diff d2.png "$ROOT/scenes/scene.txt" "$CI/moved.png"
+"$W" -q -s 48 --eye 30,-180,40 -o "$CI/moved.png" "$ROOT/scenes/scene.txt"
+vg "compare another camera" 0 compare -q -s 48 -j 2 --json --diff d2.png "$ROOT/scenes/scene.txt" "$CI/moved.png"
 mkdir -p "$CI/class/Ada_1_assignsubmission_file_"
 cp "$CI/moved.png" "$CI/bmp24.bmp" "$CI/class/Ada_1_assignsubmission_file_/"
 (cd "$CI" && python3 -c 'import zipfile; z = zipfile.ZipFile("class.zip", "w"); z.write("class/Ada_1_assignsubmission_file_/bmp24.bmp"); z.close()')
