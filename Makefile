@@ -64,16 +64,24 @@ CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
 FAST_PKGS := libisal-dev libzip-dev
+# The cross builds' (make windows: MinGW-w64, and wine for its suite;
+# dpkg-dev unpacks Debian's zlib and libpng sources, scripts/third-party.sh).
+WIN_PKGS := mingw-w64 wine wine64 dpkg-dev
 CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
-	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
+	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation \
+	$(WIN_PKGS)
 BENCH_PKGS := bc
 # Offered, not required: the benchmark's Embree column (make deps installs it).
 BENCH_OPT_PKGS := libembree-dev
 
 # ---- the library ----------------------------------------------------------
 LIB_MODULES := base syntax export shapes plugin accel scene render scenefile image dist grade
-LIB_SRC := $(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))
+# The platform layer (src/base/platform.h): one file a system; the
+# Windows cross build (make windows) takes the other.
+PLATFORM_SRC ?= src/base/platform_posix.c
+LIB_SRC := $(filter-out src/base/platform_%.c,$(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))) \
+	$(PLATFORM_SRC)
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
 SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
 
@@ -111,10 +119,10 @@ UNIT_DATA_DIR ?= $(abspath tests/data)
 # library's units, then the programs end to end, then hostile input), the
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
-	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
+	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
 	install-test newshape plugintest embreecheck
 
-.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
+.PHONY: windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
 	$(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
@@ -235,6 +243,64 @@ $(BUILD)/san/fuzz_plugin_replay: tests/fuzz/replay.c tests/fuzz/plugin_harness.c
 	$(BUILD)/san/libwhitted.a
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -DRT_FUZZ_TARGET=fuzz_plugin_one -o $@ \
 		tests/fuzz/replay.c tests/fuzz/plugin_harness.c $(BUILD)/san/libwhitted.a $(LDLIBS)
+
+# ---- the cross builds' libraries: zlib, libpng, stb_image -----------------
+# make windows and make web compile Debian's sources of zlib and libpng
+# (and libstb-dev's header) into their programs: MinGW-w64 has no libpng,
+# and emscripten's ports would be fetched from the network.
+# scripts/third-party.sh fetches and unpacks them once, under
+# build/third_party/.
+THIRD := $(BUILD)/third_party
+ZLIB_C := adler32 compress crc32 deflate gzclose gzlib gzread gzwrite infback inffast inflate \
+	inftrees trees uncompr zutil
+LIBPNG_C := png pngerror pngget pngmem pngpread pngread pngrio pngrtran pngrutil pngset \
+	pngtrans pngwio pngwrite pngwtran pngwutil
+THIRD_SRC := $(ZLIB_C:%=$(THIRD)/zlib/%.c) $(LIBPNG_C:%=$(THIRD)/libpng/%.c)
+THIRD_CFLAGS := -I$(THIRD)/zlib -I$(THIRD)/libpng -isystem $(THIRD)/include
+$(THIRD)/.stamp: scripts/third-party.sh
+	@scripts/third-party.sh $(THIRD)
+	@touch $@
+$(THIRD_SRC): $(THIRD)/.stamp
+	@test -f $@
+
+# ---- make windows: whitted.exe and scene2pov.exe --------------------------
+# Cross-built with Debian's MinGW-w64 (the POSIX thread model, for
+# pthreads), static: zlib, libpng and stb_image built in, the C runtime's
+# and winpthreads' libraries linked in, so each .exe runs alone.  The
+# platform layer is src/base/platform_windows.c: no plugins, no huge
+# pages (whitted.exe --version says so).  The AVX2 and AVX-512 files are
+# compiled without their instruction sets: GCC does not align the stack
+# of Windows' x64 calling convention to the 32 bytes their spills need
+# (GCC bug 54412), and every walk gives the same image.  make wintest
+# runs them under wine against the Linux build.
+WIN_CC ?= x86_64-w64-mingw32-gcc-posix
+WIN := $(BUILD)/windows
+# -Wno-format: MinGW's GCC checks format(printf) as Microsoft's printf,
+# which has no %zu, though the functions behind it are MinGW's C99 ones
+# (__USE_MINGW_ANSI_STDIO); the native builds check the formats.
+WIN_CFLAGS := $(WARN) -Wno-format $(FP) -O2 -Iinclude -Isrc $(THIRD_CFLAGS) \
+	-D__USE_MINGW_ANSI_STDIO=1 -MMD -MP
+WIN_LIB_SRC := $(filter-out src/base/platform_posix.c,$(LIB_SRC)) src/base/platform_windows.c
+WIN_LIBS := -static -lpsapi -lm -pthread
+$(WIN)/third/%.o: $(THIRD)/%.c
+	@mkdir -p $(@D)
+	$(WIN_CC) -std=c99 -O2 $(FP) $(THIRD_CFLAGS) -w -c $< -o $@
+$(WIN)/%.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(WIN_CC) $(WIN_CFLAGS) -c $< -o $@
+WIN_THIRD_OBJ := $(THIRD_SRC:$(THIRD)/%.c=$(WIN)/third/%.o)
+WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
+$(WIN)/pov_export/%.o: WIN_CFLAGS += -Ipov_export
+$(WIN)/whitted.exe: $(WHITTED_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
+	$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+$(WIN)/scene2pov.exe: $(POV_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
+	$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+windows:
+	@scripts/deps.sh $(filter-out wine wine64,$(WIN_PKGS))
+	@$(MAKE) --no-print-directory $(WIN)/whitted.exe $(WIN)/scene2pov.exe
+	@echo "built $(WIN)/whitted.exe and $(WIN)/scene2pov.exe"
+wintest: all plugins windows
+	@tests/windows/run.sh $(WIN) $(BUILD)
 
 # ---- make check -----------------------------------------------------------
 # check-deps installs first; the suites then run in a new make, so that what

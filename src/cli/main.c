@@ -12,6 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/platform.h"
 #include "cli/cli.h"
 #include "cli/suggest.h"
 #include "cli/tool.h"
@@ -26,20 +27,7 @@ static void on_signal(int sig)
 
 void cli_set_signals(void)
 {
-	struct sigaction sa, old_sa;
-
-	memset(&sa, 0, sizeof(sa));
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
-	/* A closed terminal stops the render cleanly too, unless the hang-up
-	 * is ignored (nohup). */
-	if (sigaction(SIGHUP, NULL, &old_sa) == 0 && old_sa.sa_handler != SIG_IGN)
-		sigaction(SIGHUP, &sa, NULL);
-	/* A file-size limit then fails the write with EFBIG instead of killing
-	 * us with a temporary file left behind. */
-	signal(SIGXFSZ, SIG_IGN);
+	rt_on_stop_signals(on_signal);
 }
 
 /* The commands that render (all but merge) say when WHITTED_ISA is not

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/platform.h"
 #include "cli/render_args.h"
 #include "cli/tool.h"
 #include "whitted/frames.h"
@@ -283,7 +284,8 @@ static int render_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("whitted %s\n", RT_VERSION);
+		printf("whitted %s%s%s\n", RT_VERSION, rt_platform_note()[0] ? "\n" : "",
+		       rt_platform_note());
 		exit(0);
 	}
 	return -1;
