@@ -52,6 +52,7 @@ static const struct subcommand {
 	{ "merge", "whitted merge", merge_main, false },
 	{ "compare", "whitted compare", compare_main, true },
 	{ "grade", "whitted grade", grade_main, true },
+	{ "explain", "whitted explain", explain_main, true },
 };
 #define N_SUBCOMMANDS (sizeof(subcommands) / sizeof(subcommands[0]))
 
@@ -78,7 +79,7 @@ static bool looks_like_command(const char *w)
  * go on and read it as the scene. */
 static int not_a_command(const char *w)
 {
-	static const char *const words[] = { "merge", "compare", "grade", "help" };
+	static const char *const words[] = { "merge", "compare", "grade", "explain", "help" };
 	const char *hit;
 
 	if (!looks_like_command(w))
@@ -121,7 +122,7 @@ int main(int argc, char **argv)
 				return run_subcommand(&subcommands[i], 2, args);
 			}
 		if (argc >= 3)
-			return tool_usage_error("help: no subcommand '%s' (merge, compare or grade)",
+			return tool_usage_error("help: no subcommand '%s' (merge, compare, grade or explain)",
 						argv[2]);
 		return run_subcommand(&subcommands[0], 2, args);
 	}
