@@ -122,7 +122,7 @@ SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-re
 	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
 	install-test newshape plugintest embreecheck
 
-.PHONY: windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
+.PHONY: web webtest windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
 	$(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
@@ -251,7 +251,7 @@ $(BUILD)/san/fuzz_plugin_replay: tests/fuzz/replay.c tests/fuzz/plugin_harness.c
 # scripts/third-party.sh fetches and unpacks them once, under
 # build/third_party/.
 THIRD := $(BUILD)/third_party
-ZLIB_C := adler32 compress crc32 deflate gzclose gzlib gzread gzwrite infback inffast inflate \
+ZLIB_C := adler32 compress crc32 deflate infback inffast inflate \
 	inftrees trees uncompr zutil
 LIBPNG_C := png pngerror pngget pngmem pngpread pngread pngrio pngrtran pngrutil pngset \
 	pngtrans pngwio pngwrite pngwtran pngwutil
@@ -301,6 +301,50 @@ windows:
 	@echo "built $(WIN)/whitted.exe and $(WIN)/scene2pov.exe"
 wintest: all plugins windows
 	@tests/windows/run.sh $(WIN) $(BUILD)
+
+# ---- make web: the page (build/web/index.html) ----------------------------
+# The library, whitted's command line and web/web_api.c compiled by
+# Debian's emscripten into one WebAssembly module, its SSE2 paths into
+# WebAssembly SIMD (-msimd128 -msse2: the same operations, so the same
+# bytes), zlib and libpng from Debian's sources; then web/bundle.py puts
+# it, the page's script and style into one index.html (the module inlined
+# in base64: no server, no network; it opens from disk and from any
+# static host) and copies the screenshot-free folder's few files.  The
+# workers are made from that inlined text (a Blob), as a page opened from
+# disk may start no worker from a file.
+WEB := $(BUILD)/web
+WEB_OBJ_DIR := $(BUILD)/wasm
+EMCC ?= emcc
+WEB_PKGS := emscripten nodejs npm dpkg-dev
+WEB_CFLAGS := $(WARN) $(FP) -O3 -msimd128 -msse2 -Iinclude -Isrc $(THIRD_CFLAGS) -MMD -MP
+WEB_LDFLAGS := -O3 -msimd128 -sMODULARIZE=1 -sEXPORT_NAME=createWhittedModule \
+	-sENVIRONMENT=worker -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 \
+	-sTOTAL_STACK=16777216 -sEXIT_RUNTIME=0 -sINVOKE_RUN=0 -sFILESYSTEM=1 \
+	-sEXPORTED_FUNCTIONS=_web_argv_reset,_web_argv_push,_web_cli,_web_render_begin,_web_render_width,_web_render_height,_web_render_rows,_web_render_end,_malloc,_free \
+	-sEXPORTED_RUNTIME_METHODS=['FS','ccall','UTF8ToString'] --no-entry
+WEB_SRC := $(LIB_SRC) $(TOOLS_SRC) $(WHITTED_SRC) web/web_api.c
+$(WEB_OBJ_DIR)/third/%.o: $(THIRD)/%.c
+	@mkdir -p $(@D)
+	$(EMCC) -std=c99 -O3 $(FP) $(THIRD_CFLAGS) -w -c $< -o $@
+$(WEB_OBJ_DIR)/%.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(EMCC) $(WEB_CFLAGS) -c $< -o $@
+# Debian's emscripten runs its optimiser under node with Debian's acorn
+# (node-acorn, in /usr/share/nodejs), which a node from elsewhere does not
+# look for.
+$(WEB_OBJ_DIR)/whitted-wasm.js: export NODE_PATH := /usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
+# whitted's main is the page's whitted_main (web_api.c calls it).
+$(WEB_OBJ_DIR)/src/cli/main.o: WEB_CFLAGS += -Dmain=whitted_main -Wno-missing-prototypes
+$(WEB_OBJ_DIR)/whitted-wasm.js: $(WEB_SRC:%.c=$(WEB_OBJ_DIR)/%.o) \
+	$(THIRD_SRC:$(THIRD)/%.c=$(WEB_OBJ_DIR)/third/%.o)
+	$(EMCC) -o $@ $^ $(WEB_LDFLAGS)
+$(WEB)/index.html: $(WEB_OBJ_DIR)/whitted-wasm.js web/bundle.py $(wildcard web/*.js web/*.html web/*.css)
+	@mkdir -p $(@D)
+	python3 web/bundle.py $(WEB_OBJ_DIR)/whitted-wasm.js web $(WEB)
+web:
+	@scripts/deps.sh $(filter-out npm,$(WEB_PKGS))
+	@$(MAKE) --no-print-directory $(WEB)/index.html
+	@echo "built $(WEB)/index.html ($$(du -sh $(WEB) | cut -f1)): open it in a browser"
 
 # ---- make check -----------------------------------------------------------
 # check-deps installs first; the suites then run in a new make, so that what
