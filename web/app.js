@@ -10,7 +10,7 @@
   const $ = (id) => document.getElementById(id);
   const canvas = $('canvas'), ctx = canvas.getContext('2d');
   const state = {
-    text: $('example-scene').value, name: 'scene.txt', textures: {}, camera: null,
+    text: $('example-scene').value, bytes: null, name: 'scene.txt', textures: {}, camera: null,
     image: null, step: 10, turn: 5 * Math.PI / 180, busy: false, again: false, preview: false,
   };
 
@@ -55,6 +55,8 @@
   }
 
   // ---- options and rendering ----
+  const scene = () => state.bytes || state.text;
+
   function options(preview) {
     const f = $('options').elements, o = { name: state.name };
     for (const key of ['size', 'recursion', 'samples', 'eye', 'look', 'up', 'fov', 'floor', 'glass', 'clamp'])
@@ -113,7 +115,7 @@
     $('status').textContent = preview ? 'previewing...' : 'rendering...';
     const t0 = performance.now();
     try {
-      const img = await whitted.render(state.text, Object.assign({ onprogress: setProgress }, o));
+      const img = await whitted.render(scene(), Object.assign({ onprogress: setProgress }, o));
       canvas.width = img.width;
       canvas.height = img.height;
       ctx.putImageData(new ImageData(img.rgba, img.width, img.height), 0, 0);
@@ -174,7 +176,10 @@
   const readBytes = (file) => file.arrayBuffer().then((b) => new Uint8Array(b));
 
   async function openScene(file) {
-    state.text = await file.text();
+    // The bytes go to whitted as read (a byte order mark, CRLF, any
+    // encoding); the text is for the view of an error.
+    state.bytes = await readBytes(file);
+    state.text = new TextDecoder('utf-8').decode(state.bytes);
     state.name = file.name.replace(/[^A-Za-z0-9._-]/g, '_') || 'scene.txt';
     $('scene-name').textContent = file.name;
     $('explain').replaceChildren();
@@ -186,7 +191,7 @@
     if (files.length === 1) {
       $('compare-report').replaceChildren(el('p', {}, 'comparing ' + files[0].name + '...'));
       try {
-        const res = await whitted.compare(state.text, await readBytes(files[0]),
+        const res = await whitted.compare(scene(), await readBytes(files[0]),
           Object.assign(o, { imageName: files[0].name.replace(/[^A-Za-z0-9._-]/g, '_'), diff: true }));
         showCompare(res, $('compare-report'), files[0].name);
       } catch (e) {
@@ -199,7 +204,7 @@
     for (const f of files)
       images.push({ name: f.name.replace(/[^A-Za-z0-9._-]/g, '_'), bytes: await readBytes(f) });
     try {
-      showGrade(await whitted.grade(state.text, images, o), $('grade-report'));
+      showGrade(await whitted.grade(scene(), images, o), $('grade-report'));
     } catch (e) {
       $('grade-report').replaceChildren(el('p', {}, e.message));
     }
@@ -335,13 +340,14 @@
   }, { passive: false });
 
   async function explainAt(e) {
+    // The image's pixel under the pointer, within the canvas's border.
     const r = canvas.getBoundingClientRect();
-    const x = Math.floor((e.clientX - r.left) * canvas.width / r.width);
-    const y = Math.floor((e.clientY - r.top) * canvas.height / r.height);
+    const x = Math.min(canvas.width - 1, Math.floor((e.clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth));
+    const y = Math.min(canvas.height - 1, Math.floor((e.clientY - r.top - canvas.clientTop) * canvas.height / canvas.clientHeight));
     const o = options(false);
     $('explain').replaceChildren(el('p', {}, 'explaining pixel ' + x + ',' + y + '...'));
     try {
-      const ex = await whitted.explain(state.text, x, y, o);
+      const ex = await whitted.explain(scene(), x, y, o);
       showExplanation(ex, $('explain'));
       document.body.dataset.explained = String(Number(document.body.dataset.explained || 0) + 1);
     } catch (err) {

@@ -54,7 +54,12 @@ function handle(M, msg) {
     reply.status = M._web_cli();
     reply.files = {};
     for (const name of msg.want || []) {
-      try { reply.files[name] = M.FS.readFile(dir + '/' + name); } catch (e) { /* not written */ }
+      try {
+        // whitted gives a new file the permissions the umask leaves,
+        // none under emscripten's: make it readable first.
+        M.FS.chmod(dir + '/' + name, 0o644);
+        reply.files[name] = M.FS.readFile(dir + '/' + name);
+      } catch (e) { /* not written */ }
     }
     removeDir(M, dir);
   } else if (msg.op === 'begin') {
