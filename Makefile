@@ -67,10 +67,13 @@ FAST_PKGS := libisal-dev libzip-dev
 # The cross builds' (make windows: MinGW-w64, and wine for its suite;
 # dpkg-dev unpacks Debian's zlib and libpng sources, scripts/third-party.sh).
 WIN_PKGS := mingw-w64 wine wine64 dpkg-dev
+# make web's (emscripten, whose optimiser needs node-acorn) and its
+# browser suite's (node and npm for playwright-core, and chromium).
+WEB_PKGS := emscripten node-acorn nodejs npm dpkg-dev
 CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation \
-	$(WIN_PKGS)
+	$(WIN_PKGS) $(WEB_PKGS)
 BENCH_PKGS := bc
 # Offered, not required: the benchmark's Embree column (make deps installs it).
 BENCH_OPT_PKGS := libembree-dev
@@ -119,7 +122,7 @@ UNIT_DATA_DIR ?= $(abspath tests/data)
 # library's units, then the programs end to end, then hostile input), the
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
-	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
+	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest reportcheck webtest viewer-e2e \
 	install-test newshape plugintest embreecheck
 
 .PHONY: web webtest windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
@@ -292,9 +295,11 @@ WIN_THIRD_OBJ := $(THIRD_SRC:$(THIRD)/%.c=$(WIN)/third/%.o)
 WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
 $(WIN)/pov_export/%.o: WIN_CFLAGS += -Ipov_export
 $(WIN)/whitted.exe: $(WHITTED_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
-	$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+	@echo "$(WIN_CC) -o $@ ... $(WIN_LIBS)"
+	@$(WIN_CC) -o $@ $^ $(WIN_LIBS)
 $(WIN)/scene2pov.exe: $(POV_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
-	$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+	@echo "$(WIN_CC) -o $@ ... $(WIN_LIBS)"
+	@$(WIN_CC) -o $@ $^ $(WIN_LIBS)
 windows:
 	@scripts/deps.sh $(filter-out wine wine64,$(WIN_PKGS))
 	@$(MAKE) --no-print-directory $(WIN)/whitted.exe $(WIN)/scene2pov.exe
@@ -315,7 +320,6 @@ wintest: all plugins windows
 WEB := $(BUILD)/web
 WEB_OBJ_DIR := $(BUILD)/wasm
 EMCC ?= emcc
-WEB_PKGS := emscripten nodejs npm dpkg-dev
 WEB_CFLAGS := $(WARN) $(FP) -O3 -msimd128 -msse2 -Iinclude -Isrc $(THIRD_CFLAGS) -MMD -MP
 WEB_LDFLAGS := -O3 -msimd128 -sMODULARIZE=1 -sEXPORT_NAME=createWhittedModule \
 	-sENVIRONMENT=worker -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 \
@@ -337,7 +341,8 @@ $(WEB_OBJ_DIR)/whitted-wasm.js: export NODE_PATH := /usr/share/nodejs$(if $(NODE
 $(WEB_OBJ_DIR)/src/cli/main.o: WEB_CFLAGS += -Dmain=whitted_main -Wno-missing-prototypes
 $(WEB_OBJ_DIR)/whitted-wasm.js: $(WEB_SRC:%.c=$(WEB_OBJ_DIR)/%.o) \
 	$(THIRD_SRC:$(THIRD)/%.c=$(WEB_OBJ_DIR)/third/%.o)
-	$(EMCC) -o $@ $^ $(WEB_LDFLAGS)
+	@echo "$(EMCC) -o $@ ... $(WEB_LDFLAGS)"
+	@$(EMCC) -o $@ $^ $(WEB_LDFLAGS)
 $(WEB)/index.html: $(WEB_OBJ_DIR)/whitted-wasm.js web/bundle.py $(wildcard web/*.js web/*.html web/*.css)
 	@mkdir -p $(@D)
 	python3 web/bundle.py $(WEB_OBJ_DIR)/whitted-wasm.js web $(WEB)
@@ -345,6 +350,9 @@ web:
 	@scripts/deps.sh $(filter-out npm,$(WEB_PKGS))
 	@$(MAKE) --no-print-directory $(WEB)/index.html
 	@echo "built $(WEB)/index.html ($$(du -sh $(WEB) | cut -f1)): open it in a browser"
+# The page in headless chromium against build/whitted (tests/web/run.mjs).
+webtest: all web
+	@tests/web/run.sh $(BUILD)
 
 # ---- make check -----------------------------------------------------------
 # check-deps installs first; the suites then run in a new make, so that what

@@ -65,6 +65,7 @@ provided() {
 	emscripten) has emcc ;;
 	nodejs) has node ;;
 	npm) has npm ;;
+	node-acorn) [ -f /usr/share/nodejs/acorn/package.json ] ;;
 	openssh-client) has ssh ;;
 	openssh-server) has sshd || [ -x /usr/sbin/sshd ] ;;
 	xvfb) has Xvfb ;;

@@ -118,6 +118,8 @@
       const img = await whitted.render(scene(), Object.assign({ onprogress: setProgress }, o));
       canvas.width = img.width;
       canvas.height = img.height;
+      // A small image is shown larger, its pixels square.
+      canvas.style.width = (img.width < 384 ? 384 : img.width) + 'px';
       ctx.putImageData(new ImageData(img.rgba, img.width, img.height), 0, 0);
       state.image = img;
       $('error').hidden = true;
