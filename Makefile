@@ -485,6 +485,11 @@ bench: all
 	@if [ -f /usr/include/embree3/rtcore.h ]; then \
 		$(MAKE) --no-print-directory $(BUILD)/whitted-embree $(BUILD)/embree_build; fi
 	@bench/bench.sh
+	@if command -v emcc >/dev/null 2>&1 && command -v chromium >/dev/null 2>&1; then \
+		$(MAKE) --no-print-directory web >/dev/null && tests/web/run.sh $(BUILD) --install-only && \
+		node bench/web-bench.mjs $(BUILD)/web/index.html $(BUILD)/whitted scenes/scene.txt \
+			$(BUILD)/node/node_modules; \
+	else echo "web row: not run (emscripten or chromium missing: make deps)"; fi
 
 # ---- installing -----------------------------------------------------------
 MAN_PAGES := $(wildcard docs/man/*.1)

@@ -126,20 +126,31 @@
     const rgba = new Uint8ClampedArray(width * height * 4);
     const bands = Math.ceil(height / BAND);
     let next = 0, done = 0, failure = null;
+    // Each worker has two bands asked of it at a time, so that it starts
+    // the next while the page takes in the last.
     async function work(w) {
-      while (next < bands && !failure) {
+      const asked = [];
+      const ask = () => {
+        if (next >= bands || failure)
+          return;
         if (mine !== generation) {
           failure = new Error('whitted: render superseded by a newer one');
           failure.name = 'AbortError';
-          break;
+          return;
         }
         const y0 = (next++) * BAND, y1 = Math.min(height, y0 + BAND);
-        const r = await w.call({ op: 'rows', y0, y1 });
+        asked.push(w.call({ op: 'rows', y0, y1 }));
+      };
+      ask();
+      ask();
+      while (asked.length) {
+        const r = await asked.shift();
         if (r.status !== 0) {
           failure = failure || runError(r);
-          break;
+          continue;
         }
-        for (let i = 0, o = y0 * width * 4; i < r.rgb.length; i += 3, o += 4) {
+        ask();
+        for (let i = 0, o = r.y0 * width * 4; i < r.rgb.length; i += 3, o += 4) {
           rgba[o] = r.rgb[i];
           rgba[o + 1] = r.rgb[i + 1];
           rgba[o + 2] = r.rgb[i + 2];

@@ -25,7 +25,7 @@ import { pathToFileURL } from 'node:url';
 import { createRequire } from 'node:module';
 
 const [page, whittedBin, root, out, modules] = process.argv.slice(2);
-const require = createRequire(path.join(modules, 'x.js'));
+const require = createRequire(path.resolve(modules, 'x.js'));
 const { chromium } = require('playwright-core');
 const chromiumPath = ['/usr/bin/chromium', '/usr/bin/chromium-browser'].find((p) => fs.existsSync(p));
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'whitted-webtest-'));

@@ -3,7 +3,7 @@
 # (the version of tests/web/package.json) from npm into build/node once,
 # then runs tests/web/run.mjs with Debian's chromium against build/web and
 # build/whitted; screenshots and figures go to build/test-output/.
-# Usage: tests/web/run.sh BUILD
+# Usage: tests/web/run.sh BUILD [--install-only]
 set -u
 SUITE=webtest
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,5 +31,6 @@ if ! cmp -s "$root/tests/web/package.json" "$mods/package.json" || [ ! -d "$mods
 		exit 1
 	fi
 fi
+[ "${2:-}" = --install-only ] && exit 0
 mkdir -p "$out"
 exec node "$root/tests/web/run.mjs" "$build/web/index.html" "$build/whitted" "$root" "$out" "$mods/node_modules"
