@@ -61,6 +61,9 @@ static void usage(FILE *f)
 		"reference and names the likely mistake; whitted grade --scene SCENE IMAGE...\n"
 		"checks a class's, with an HTML report (see their --help).\n"
 		"\n"
+		"whitted explain [OPTIONS] SCENE X,Y     why pixel X,Y has its colour: its rays,\n"
+		"hits, lights, shadows and reflections down to the 8-bit value (--json too).\n"
+		"\n"
 		"Exit status: 0 success, 1 scene, input or I/O error, 2 bad command line,\n"
 		"128+N when stopped by signal N (the output is then left untouched).\n",
 		cli_scene_help, cli_default_threads(), (unsigned long long)RT_DEFAULT_MAX_RAYS,
