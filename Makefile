@@ -122,7 +122,7 @@ UNIT_DATA_DIR ?= $(abspath tests/data)
 # library's units, then the programs end to end, then hostile input), the
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
-	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest reportcheck webtest viewer-e2e \
+	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest explaintest reportcheck webtest viewer-e2e \
 	install-test newshape plugintest embreecheck
 
 .PHONY: web webtest windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
@@ -422,6 +422,8 @@ mistakecheck: all
 	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_DATA_DIR)
 comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
+explaintest: all
+	@tests/cli/explain.sh
 reportcheck: all
 	@tests/cli/report.sh $(BUILD)/whitted
 viewer-e2e: all plugins
