@@ -70,7 +70,7 @@ WIN_PKGS := mingw-w64 wine wine64 dpkg-dev
 # make web's (emscripten, whose optimiser needs node-acorn) and its
 # browser suite's (node and npm for playwright-core, and chromium).
 WEB_PKGS := emscripten node-acorn nodejs npm dpkg-dev
-CHECK_PKGS := $(CORE_PKGS) libcmocka-dev valgrind python3 povray povray-includes \
+CHECK_PKGS := $(CORE_PKGS) libzip-dev libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
 	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation \
 	$(WIN_PKGS) $(WEB_PKGS)
@@ -220,6 +220,14 @@ $(BUILD)/san/tests/%.o: ALL_CFLAGS += -Itests/unit -Iviewer \
 	-DRT_TEST_DATA_DIR='"$(UNIT_DATA_DIR)"' -DRT_TEST_PLUGIN_DIR='"$(abspath $(BUILD))/plugins"'
 # The plugins' and the loader's tests load the plugins of build/plugins/.
 $(filter $(BUILD)/san/tests/unit/plugins/% $(BUILD)/san/tests/unit/plugin/%,$(UNIT_BIN)): $(PLUGINS)
+# test_abi loads plugins built for the versions beside this one, which
+# the loader must refuse (tests/plugins/bad_abi.c).
+TEST_PLUGINS := $(BUILD)/test-plugins/abi_prev.so $(BUILD)/test-plugins/abi_next.so
+$(TEST_PLUGINS): $(BUILD)/test-plugins/abi_%.so: tests/plugins/bad_abi.c $(wildcard include/whitted/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -Iinclude -fPIC -shared \
+		-DBAD_ABI='(WHITTED_PLUGIN_ABI $(if $(filter prev,$*),-,+) 1)' -o $@ $<
+$(BUILD)/san/tests/unit/plugin/test_abi: | $(TEST_PLUGINS)
 $(BUILD)/san/tests/unit/viewer/test_%: $(BUILD)/san/tests/unit/viewer/test_%.o \
 	$(BUILD)/san/viewer/%.o $(BUILD)/san/tests/unit/support.o $(BUILD)/san/libwhitted-tools.a \
 	$(BUILD)/san/libwhitted.a
@@ -422,6 +430,8 @@ mistakecheck: all
 	@python3 tests/reference/mistakes_check.py $(BUILD)/whitted $(UNIT_DATA_DIR)
 comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
+	@tests/cli/compare_order.sh $(BUILD)/whitted
+	@tests/cli/compare_real.sh $(BUILD)/whitted
 explaintest: all
 	@tests/cli/explain.sh
 reportcheck: all

@@ -235,6 +235,21 @@ open(sys.argv[2], 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + bytes(out))
 PY
 	bench_compare match scenes/scene.txt "$DIR/compare-ref.ppm"
 	bench_compare differs scenes/scene.txt "$DIR/compare-swapped.ppm"
+	# Another camera (moved and turned as the keyboard moves it): the
+	# camera fit, then the image judged there; and the same with red and
+	# blue swapped (every cause ranked at the given camera, the fit, every
+	# cause again at the camera found).
+	"$WHITTED" -q -s 768 -j "$THREADS" --eye 38,-172,46 --look 2,-60,14 --up 0.05,0.25,0.97 --fov 72 \
+		-o "$DIR/compare-moved.ppm" scenes/scene.txt
+	python3 - "$DIR/compare-moved.ppm" "$DIR/compare-moved-rb.ppm" <<'PY'
+import sys
+d = open(sys.argv[1], 'rb').read(); m, dims, mx, px = d.split(b'\n', 3)
+out = bytearray(px)
+out[0::3], out[2::3] = px[2::3], px[0::3]
+open(sys.argv[2], 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + bytes(out))
+PY
+	bench_compare moved scenes/scene.txt "$DIR/compare-moved.ppm"
+	bench_compare moved-rb scenes/scene.txt "$DIR/compare-moved-rb.ppm"
 	# A course file with 9 lights, the slowest to shade, at the same size:
 	# its image upside down and brighter by 20 levels, which no cause
 	# explains (every pixel differs, every cause is ranked).
@@ -264,6 +279,8 @@ PY
 	echo "|---|---|---|"
 	echo "| a matching image (the reference render only) | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-match.median")") |"
 	echo "| an image that differs (every cause ranked, the best 3 in full) | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-differs.median")") |"
+	echo "| another camera (the camera fit; matches there) | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-moved.median")") |"
+	echo "| another camera, red and blue swapped (causes, the fit, causes there) | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-moved-rb.median")") |"
 	if [ -s "$DIR/compare-sad-rb.median" ]; then
 		echo "| sadathossain01 (9 lights) 768x768, red and blue swapped | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-sad-rb.median")") |"
 		echo "| sadathossain01 768x768, upside down and brighter (no cause explains it) | $RUNS | $(printf '%.3f' "$(cat "$DIR/compare-sad-swapped.median")") |"

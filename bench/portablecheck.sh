@@ -64,5 +64,55 @@ for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
 			sed -n 's/.*, \([a-z0-9]*\) walk, .*/\1/p' >>"$T/walks"
 	done
 done
-echo "portablecheck: $pass passed, $fail failed; walks compared with the portable build's: $(sort -u "$T/walks" | tr '\n' ' ')portable"
+# A camera 1e17 away with a field of view of 6e-14 degrees (a 48-pixel
+# view of the flat tiles' back wall): a ray's origin is so far that a box
+# thinner along y than the origin's spacing of doubles (16) has one t for
+# both its faces, its entry equal to its exit, which every walk must take
+# as a hit (a strict box test loses the whole wall).
+scene=tests/scenes/flat-tiles.txt
+far="--eye 0,-1e17,20 --look 0,0,20 --fov 6e-14"
+for j in 1 2; do
+	# shellcheck disable=SC2086
+	if ! "$W" -q -j $j -s 48 $far -o "$T/sse.ppm" "$scene" 2>"$T/err"; then
+		echo "portablecheck: $scene (far eye) -j $j: the SSE2 build fails: $(head -3 "$T/err")"
+		fail=$((fail + 1))
+		continue
+	fi
+	# shellcheck disable=SC2086
+	same_as_default "the portable build (far eye)" "$T/portable.ppm" \
+		"$P" -q -j $j -s 48 $far -o "$T/portable.ppm" "$scene"
+	for isa in avx2 sse2; do
+		# shellcheck disable=SC2086
+		same_as_default "the walk under WHITTED_ISA=$isa (far eye)" "$T/$isa.ppm" \
+			env WHITTED_ISA=$isa "$W" -q -j $j -s 48 $far -o "$T/$isa.ppm" "$scene"
+	done
+	# shellcheck disable=SC2086
+	same_as_default "single rays (WHITTED_PACKETS=0, far eye)" "$T/single.ppm" \
+		env WHITTED_PACKETS=0 "$W" -q -j $j -s 48 $far -o "$T/single.ppm" "$scene"
+done
+# The ray counts too (--stats), where a light lies in the floor's plane
+# (N.L exactly 0 over the floor: no light and no shadow ray there), at
+# 200 px: one ray at a time, packets by default and forced in each walk.
+scene=tests/scenes/light-in-floor-plane.txt
+k=0
+for how in "WHITTED_PACKETS=0" "WHITTED_PACKETS=" "WHITTED_PACKETS=1" \
+	"WHITTED_PACKETS=1 WHITTED_ISA=sse2" "WHITTED_PACKETS=1 WHITTED_ISA=avx2"; do
+	k=$((k + 1))
+	# shellcheck disable=SC2086
+	env $how "$W" -q --stats -s 200 -o "$T/plane$k.ppm" "$scene" 2>&1 |
+		sed -n 's/^rays: *\(.*\), [0-9.]* M rays\/s$/\1/p' >"$T/rays$k"
+	if [ ! -s "$T/rays$k" ]; then
+		echo "portablecheck: $scene under $how: no ray counts"
+		fail=$((fail + 1))
+	elif [ $k -gt 1 ]; then
+		if cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" && cmp -s "$T/rays1" "$T/rays$k"; then
+			pass=$((pass + 1))
+		else
+			echo "portablecheck: $scene under $how: $(cat "$T/rays$k"), one ray at a time $(cat "$T/rays1")$(cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" || echo ', another image')"
+			fail=$((fail + 1))
+		fi
+	fi
+done
+echo "portablecheck: walks compared with the portable build's: $(sort -u "$T/walks" | tr '\n' ' ')portable"
+echo "portablecheck: $pass passed, $fail failed, 0 skipped"
 [ $fail -eq 0 ] && [ $pass -gt 0 ]

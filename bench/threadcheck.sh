@@ -2,11 +2,13 @@
 # The image must not depend on the number of threads: renders scenes with
 # 1, 2, 3 and 7 threads and compares the files byte for byte.  The 12,000
 # object scene is big enough for the hierarchy's build to split its work
-# between threads too; helgrind (when valgrind is installed) then looks
-# for data races in the build, the parse's hashing thread and the render,
-# and in a PNG compressed by the render's threads or after it by the
-# write's.  The PNG files of 1, 2, 3 and 7 threads are compared too
-# (compressed during the render or after it).  Every size leaves partial
+# between threads too; helgrind then looks for data races in the build,
+# the parse's hashing thread and the render, and in a PNG compressed by
+# the render's threads or after it by the write's (without valgrind those
+# runs are NOT RUN and counted as skipped; with it installed, a run that
+# did not happen fails).  The PNG files of 1, 2, 3 and 7 threads are
+# compared too (compressed during the render or after it), and a PNG
+# whose second band is final before its first.  Every size leaves partial
 # 16x16 blocks at the right and bottom edges (203 = 12 x 16 + 11).  Since
 # images that agree with each other can all be wrong alike, the 203-pixel
 # render is also checked against what does not share the block loop: the
@@ -57,6 +59,56 @@ for j in 1 2 3 7 $np; do
 		fi
 	fi
 done
+# A strip of the PNG may be compressed only once the band above it is
+# final too (its filter reads that band's last row).  Bands finish in
+# order in most renders; here the last block of the first band (rows
+# 48-63, columns 112-127 of 128) is a quad lit by 4000 lights, some 100
+# times the work of the whole second band (sky: --no-floor), so that the
+# second band is final first.  The PNG compressed during the render (as
+# many threads as processors, at least 2) must be the one written after a
+# one-thread render, three times over.
+python3 - "$T/band.txt" <<'END'
+import math, random, sys
+size, lights = 128, 4000
+eye, look, up0 = (0.0, -200.0, 10.0), (0.0, 0.0, 0.0), (0.0, 0.0, 1.0)
+def sub(a, b): return tuple(x - y for x, y in zip(a, b))
+def add(a, b): return tuple(x + y for x, y in zip(a, b))
+def mul(a, s): return tuple(x * s for x in a)
+def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def unit(a): return mul(a, 1 / math.sqrt(sum(x * x for x in a)))
+fwd = unit(sub(look, eye)); right = unit(cross(fwd, up0)); up = cross(right, fwd)
+h = math.tan(math.radians(40))
+def corner(px, py):
+    d = add(fwd, add(mul(right, (px / size * 2 - 1) * h), mul(up, (1 - py / size * 2) * h)))
+    return ' '.join('%.9f' % v for v in add(eye, mul(d, 100)))
+c = [corner(x, y) for x, y in ((112, 48), (128, 48), (128, 64), (112, 64))]
+mat = '0.9 0.5 0.2\n0.4 0.3 0.2 0\n5\n'
+r = random.Random(7)
+with open(sys.argv[1], 'w') as f:
+    f.write('1\n%d\n2\n' % size)
+    for a, b, d in ((c[0], c[1], c[2]), (c[0], c[2], c[3])):
+        f.write('triangle\n%s\n%s\n%s\n%s' % (a, b, d, mat))
+    f.write('%d\n' % lights)
+    for i in range(lights):
+        f.write('%.3f %.3f %.3f 0.001 0.001 0.001\n' % (r.uniform(-300, 300), r.uniform(-400, -150),
+                                                       r.uniform(20, 300)))
+END
+bj=$np
+[ "$bj" -ge 2 ] || bj=2
+if "$W" -q -j 1 --no-floor -o "$T/band1.png" "$T/band.txt"; then
+	for k in 1 2 3; do
+		"$W" -q -j $bj --no-floor -o "$T/bandj.png" "$T/band.txt"
+		if cmp -s "$T/band1.png" "$T/bandj.png"; then
+			pass=$((pass + 1))
+		else
+			echo "threadcheck: a PNG whose second band is final before the first differs (-j $bj, run $k)"
+			fail=$((fail + 1))
+		fi
+	done
+else
+	echo "threadcheck: whitted failed on the two-band scene"
+	fail=$((fail + 1))
+fi
 # The 203-pixel course scene with 1 and 7 threads against the reference
 # renderer, and against the merge of nine regions whose edges (5, 101 and
 # 7, 150) lie off the block grid.
@@ -94,9 +146,15 @@ else
 fi
 # The 12k file (over 1 MiB) is read in parts by several threads, and its
 # tree built by several: helgrind looks for races there, memcheck for
-# leaks and bad reads and writes.
+# leaks and bad reads and writes.  Without valgrind these five runs are
+# NOT RUN, counted as skipped; with it (on PATH, or installed as a
+# package) every one of them must have run.
+VG_RUNS=5
+vg_ran=0
+skipped=0 why=""
 if command -v valgrind >/dev/null 2>&1; then
 	for tool in "--tool=helgrind" "--tool=memcheck --leak-check=full --errors-for-leak-kinds=all"; do
+		vg_ran=$((vg_ran + 1))
 		# shellcheck disable=SC2086
 		if valgrind $tool -q --error-exitcode=9 "$W" -q -j 3 -s 16 -o "$T/vg.ppm" \
 			"$T/gen12k.txt" 2>"$T/vg.err"; then
@@ -110,6 +168,7 @@ if command -v valgrind >/dev/null 2>&1; then
 	# helgrind_png WHAT THREADS SIZE [SCENE]: helgrind on a PNG of the
 	# course scene (or SCENE).
 	helgrind_png() {
+		vg_ran=$((vg_ran + 1))
 		if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j "$2" -s "$3" \
 			-o "$T/vg.png" "${4:-scenes/scene.txt}" 2>"$T/vg.err"; then
 			pass=$((pass + 1))
@@ -132,8 +191,16 @@ if command -v valgrind >/dev/null 2>&1; then
 	# on one thread a processor (base/huge_pages.c) before the render's
 	# threads write it.
 	helgrind_png "of 900 px, its memory zeroed on several threads" 2 900 scenes/sphere.txt
+	if [ "$vg_ran" -ne "$VG_RUNS" ]; then
+		echo "threadcheck: FAIL: valgrind is installed, but $((VG_RUNS - vg_ran)) of its $VG_RUNS runs did not run"
+		fail=$((fail + VG_RUNS - vg_ran))
+	fi
+elif dpkg-query -W -f='${Status}' valgrind 2>/dev/null | grep -q "install ok installed"; then
+	echo "threadcheck: FAIL: the valgrind package is installed, but valgrind is not on PATH: helgrind and memcheck did not run"
+	fail=$((fail + VG_RUNS))
 else
-	echo "threadcheck: helgrind and memcheck NOT RUN (valgrind is not installed)"
+	echo "threadcheck: NOT RUN: helgrind and memcheck ($VG_RUNS runs): valgrind is not installed (make deps)"
+	skipped=$VG_RUNS why=": valgrind is not installed"
 fi
-echo "threadcheck: $pass passed, $fail failed"
+echo "threadcheck: $pass passed, $fail failed, $skipped skipped$why"
 [ $fail -eq 0 ]

@@ -21,6 +21,7 @@ filter=${1:-}
 
 if ! command -v povray >/dev/null 2>&1; then
 	echo "povcheck: NOT RUN: povray is not installed (apt-get install povray); nothing was compared"
+	echo "povcheck: 0 passed, 1 failed, 0 skipped"
 	exit 1
 fi
 for tool in whitted scene2pov imgcmp; do
@@ -352,5 +353,6 @@ fi
 # Antialiasing, textured floors and glass (issue 14).
 . "$root/tests/povcheck-features.sh"
 
-echo "povcheck: $pass passed, $fail failed"
-[ "$fail" -eq 0 ] || { echo "povcheck: failing:$failed"; exit 1; }
+[ "$fail" -eq 0 ] || echo "povcheck: failing:$failed"
+echo "povcheck: $pass passed, $fail failed, 0 skipped"
+[ "$fail" -eq 0 ]

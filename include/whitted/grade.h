@@ -68,6 +68,7 @@ enum grade_cause {
 	RT_CAUSE_FLOOR_SIZE,		/* the floor of another width */
 	RT_CAUSE_FLOOR_CELL,		/* the checker's cells of another size */
 	RT_CAUSE_CHECKER_PHASE,		/* the cells counted from another origin */
+	RT_CAUSE_FLOOR_PLACE,		/* the floor with a corner at the origin */
 	RT_CAUSE_COUNT
 };
 
@@ -141,9 +142,10 @@ int grade_tie_mask(const struct grade_job *job, const struct image *ref, double 
  * When no single cause explains sub, pairs of the likeliest causes (and
  * the compositions of two transforms: a half turn, a flip with red and
  * blue swapped) are ranked too.  Causes whose figures equal the first's
- * are marked first_equal.  *n is their number (<= GRADE_MAX_RANKS). */
+ * are marked first_equal.  The pixels skip marks (ties; may be NULL) are
+ * left out of every figure.  *n is their number (<= GRADE_MAX_RANKS). */
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
-		      const struct image *tref, const struct image *sub,
+		      const struct image *tref, const struct image *sub, const uint8_t *skip,
 		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d);
 
 /* The image of a ranked cause (or pair), at full size (for the report). */
@@ -153,7 +155,9 @@ int grade_cause_image(const struct grade_job *job, const struct image *ref,
 /* The camera found from an image (grade_fit_camera). */
 struct grade_fit {
 	struct camera_params camera;	/* the camera found */
-	double score;			/* its mean squared difference on the last level */
+	double score;			/* its mean squared difference on the last level
+					 * (grey levels: the fit looks at shapes) */
+	double start_score;		/* the first start's on the same level */
 	long evals;			/* candidates rendered */
 };
 

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli/check.h"
 #include "cli/tool.h"
@@ -20,42 +21,58 @@ enum {
 static void check_usage(bool grade)
 {
 	if (grade)
-		printf("Usage: whitted grade [OPTIONS] --scene SCENE [-o REPORT.html] [--csv FILE] IMAGE...\n"
-		       "Checks every submitted IMAGE against the reference render of SCENE (made\n"
-		       "with the same options) and prints one row per image: its verdict against\n"
-		       "the gate, its PSNR and the likely mistake.  -o writes a self-contained HTML\n"
-		       "report (images inlined) with the reference, each submission and their\n"
-		       "difference side by side.\n\n");
+		printf("Usage: whitted grade [OPTIONS] --scene SCENE [--scene SCENE2 ...] [-o REPORT.html]\n"
+		       "                     [--csv FILE] [--marks FILE] IMAGE|FOLDER|ZIP...\n"
+		       "Checks every submitted image against the reference render of its scene (made\n"
+		       "with the same options) as whitted compare does (the camera that took it\n"
+		       "found when it is not the given one) and prints one row per image: its\n"
+		       "verdict, its PSNR, its points and the likely mistake, then the class's\n"
+		       "summary.  FOLDER and ZIP (a Moodle download: NAME_ID_assignsubmission_file_\n"
+		       "folders give the student and the id) are searched for PNG, BMP and PPM\n"
+		       "images.  With several scenes an image goes to the scene whose name its file\n"
+		       "name contains, else to its student's next scene.  -o writes a\n"
+		       "self-contained HTML report (images inlined, tables that sort and filter).\n\n");
 	else
 		printf("Usage: whitted compare [OPTIONS] SCENE IMAGE\n"
 		       "Renders the reference of SCENE with the options given and compares IMAGE\n"
-		       "(PNG, BMP of 24 or 32 bits bottom-up or top-down, PPM P6 or P3) with it:\n"
-		       "PSNR, mean error, the share of pixels off by more than 2, 8 and 32 levels,\n"
-		       "and the verdict against the gate (>= 60 dB, <= 0.2%% of pixels off by > 2,\n"
-		       "<= 0.02%% by > 8).  When it differs, names the likely mistakes, best first,\n"
-		       "each rendered (one rule of the assignment broken) or made from the reference\n"
-		       "(mirrored, flipped, transposed, red/blue swapped, gamma-encoded).\n\n");
+		       "(PNG, BMP of 24 or 32 bits bottom-up or top-down, PPM P6 or P3; compared at\n"
+		       "its own size) with it: PSNR, mean error, the share of pixels off by more\n"
+		       "than 2, 8 and 32 levels, and the verdict against the gate (>= 60 dB, <= 0.2%%\n"
+		       "of pixels off by > 2, <= 0.02%% by > 8), ties (pixels where either colour is\n"
+		       "right) left out.  When no known mistake explains it, finds the camera that\n"
+		       "took it (moved before the capture) and judges it there.  Names the likely\n"
+		       "mistakes, best first, one or two at once, each rendered (a rule of the\n"
+		       "assignment broken, another recursion level or floor) or made from the\n"
+		       "reference (mirrored, flipped, transposed, red/blue swapped), and says\n"
+		       "where the image differs object by object.\n\n");
 	printf("%s", cli_scene_help);
-	printf("  -j, --threads N        threads for the renders (default: %d, the cores)\n",
+	printf("  -j, --threads N        threads for the renders (default: %d, the cores)\n"
+	       "      --no-camera-fit    judge the image at the camera given only\n",
 	       cli_default_threads());
 	if (grade)
-		printf("      --scene SCENE      the scene file the images are renders of (required)\n"
+		printf("      --scene SCENE      a scene file the images are renders of (required;\n"
+		       "                         repeatable: one column a scene)\n"
 		       "  -o, --output FILE      write the HTML report to FILE\n"
-		       "      --csv FILE         write the rows as CSV to FILE\n");
+		       "      --csv FILE         write the rows as CSV to FILE\n"
+		       "      --marks FILE       the points table (lines 'match 10', 'camera 10',\n"
+		       "                         'cause 6', 'cause no-shadows 7', 'close 4',\n"
+		       "                         'differs 2', 'unreadable 0': these are the defaults)\n");
 	else
 		printf("      --diff FILE        write the difference: |reference - image| times 8\n"
-		       "                         beside a mask (yellow: off by > 2, red: > 8); .png,\n"
-		       "                         .bmp or .ppm\n"
-		       "      --json             print the figures and causes as JSON\n");
+		       "                         beside a mask (yellow: off by > 2, red: > 8, blue: a\n"
+		       "                         tie, cyan: an object that differs) and a legend;\n"
+		       "                         .png, .bmp or .ppm\n"
+		       "      --json             print the figures, the camera, the causes and the\n"
+		       "                         objects as JSON\n");
 	printf("  -h, --help             show this help\n\n");
 	if (grade)
 		printf("Exit status: 0 every image matches, 3 an image differs or is unreadable\n"
-		       "(its row says why; the report is still written), 1 the scene cannot be\n"
-		       "rendered or a report cannot be written, 2 bad command line.\n");
-	else
-		printf("Exit status: 0 the image matches, 3 it differs, 1 the scene or the image\n"
-		       "cannot be read or the image has another size (the message gives both),\n"
+		       "(its row says why; the report is still written), 1 a scene cannot be\n"
+		       "rendered, an operand read or a report written (checked before grading),\n"
 		       "2 bad command line.\n");
+	else
+		printf("Exit status: 0 the image matches (at the camera given, or at the one found),\n"
+		       "3 it differs, 1 the scene or the image cannot be read, 2 bad command line.\n");
 }
 
 static int check_option(struct check_options *o, int c, const char *arg)
@@ -119,6 +136,25 @@ static int check_option(struct check_options *o, int c, const char *arg)
 		return 0;
 	}
 	return -1;
+}
+
+/* Whether a file starts as a PNG, a BMP or a PPM does (the operands of
+ * compare given the wrong way round). */
+static bool check_looks_like_image(const char *path)
+{
+	unsigned char b[8] = { 0 };
+	struct stat st;
+	FILE *f;
+	size_t n;
+
+	/* Only a regular file: opening a named pipe would wait for a writer. */
+	if (strcmp(path, "-") == 0 || stat(path, &st) != 0 || !S_ISREG(st.st_mode) ||
+	    !(f = fopen(path, "rb")))
+		return false;
+	n = fread(b, 1, sizeof(b), f);
+	fclose(f);
+	return (n >= 8 && memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) || (n >= 2 && b[0] == 'B' && b[1] == 'M') ||
+	       (n >= 2 && b[0] == 'P' && (b[1] == '3' || b[1] == '6'));
 }
 
 int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
@@ -191,6 +227,10 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		if (first + 1 != argc)
 			return tool_usage_error("one IMAGE expected, found also '%s' (whitted grade takes many)",
 						argv[first + 1]);
+		if (o->scene.path && check_looks_like_image(o->scene.path) &&
+		    !check_looks_like_image(argv[first]))
+			return tool_usage_error("'%s' is an image and '%s' is not: SCENE comes first "
+						"(whitted compare SCENE IMAGE)", o->scene.path, argv[first]);
 	}
 	o->images = argv + first;
 	o->n_images = argc - first;

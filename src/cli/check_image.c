@@ -29,6 +29,11 @@
 /* ... and reaches at least this: below it, the camera is as unknown as
  * before (another scene, another renderer). */
 #define CHECK_MOVED_PSNR 20.0
+/* ... or its grey mean squared difference on the fit's last level is at
+ * most this share of the given camera's (3 dB less: half) and at most
+ * CHECK_MOVED_GREY_MSE (20 dB). */
+#define CHECK_MOVED_GREY 0.5
+#define CHECK_MOVED_GREY_MSE 650.0
 /* The fit's precision, in pixels: its ties allow for that much. */
 #define CHECK_FIT_PIXELS 0.35
 
@@ -162,9 +167,14 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
+	/* Nearer in colour, or in grey (the fit's own figures: an image
+	 * with a colour mistake on top, red and blue swapped, fits its
+	 * camera as well). */
 	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
-		     res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
-		     res->fig_found.psnr >= CHECK_MOVED_PSNR;
+		     ((res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
+		       res->fig_found.psnr >= CHECK_MOVED_PSNR) ||
+		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
+		       fit.score <= CHECK_MOVED_GREY_MSE));
 	if (!res->moved)
 		check_view_free(&res->found);
 	return 0;
@@ -278,7 +288,7 @@ static int check_at(struct check_view *v, struct check_result *res, struct grade
 	sub = judged.pixels ? &judged : &res->image;
 	rc = check_figures(v, sub, fig, &res->fig_rounded, &res->truncated, d);
 	if (rc == 0 && rank && !fig->match) {
-		rc = grade_rank_causes(&v->job, &v->image, &v->truncated, sub, res->ranks,
+		rc = grade_rank_causes(&v->job, &v->image, &v->truncated, sub, v->ties, res->ranks,
 				       &res->n_ranks, d);
 		if (rc == 0)
 			check_explain(res, fig);

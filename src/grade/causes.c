@@ -61,6 +61,8 @@ static const struct grade_cause_text grade_texts[RT_CAUSE_COUNT] = {
 	[RT_CAUSE_FLOOR_CELL] = { "floor-cell", "the checker's cells of another size",
 		"make the cells the dialect's width (20 classic and spot, 30 pyramid, the header's "
 		"CELL in nearfar)" },
+	[RT_CAUSE_FLOOR_PLACE] = { "floor-place", "the floor with a corner at the origin",
+		"centre the floor on the origin: it covers -width / 2 <= x, y < width / 2" },
 	[RT_CAUSE_CHECKER_PHASE] = { "checker-phase", "the checker's cells counted from another origin",
 		"count the cells from the floor's corner: i = floor((x + width / 2) / cell), j "
 		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" },
@@ -129,6 +131,7 @@ static bool grade_floor_form(const struct grade_job *job, enum grade_cause c, in
 		return false;
 	fl->half = half;
 	fl->cell = cell;
+	fl->cx = fl->cy = 0.0;
 	/* The contract's cells: from the corner of a finite floor, from the
 	 * origin of an endless one. */
 	fl->ox = fl->oy = half == INFINITY ? 0.0 : -half;
@@ -148,6 +151,17 @@ static bool grade_floor_form(const struct grade_job *job, enum grade_cause c, in
 		if (form >= (int)(sizeof(grade_cells) / sizeof(double)) || grade_cells[form] == cell)
 			return false;
 		fl->cell = grade_cells[form];
+		return true;
+	case RT_CAUSE_FLOOR_PLACE:
+		/* The square [0, width)^2 and its three mirror images: the
+		 * centre a half width off along each axis, the cells counted
+		 * from its own corner. */
+		if (half == INFINITY || form >= 4)
+			return false;
+		fl->cx = form & 1 ? -half : half;
+		fl->cy = form & 2 ? -half : half;
+		fl->ox = fl->cx - half;
+		fl->oy = fl->cy - half;
 		return true;
 	case RT_CAUSE_CHECKER_PHASE:
 		if (form == 0 && half != INFINITY)
@@ -241,6 +255,7 @@ bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 	case RT_CAUSE_FLOOR_HORIZON:
 	case RT_CAUSE_FLOOR_SIZE:
 	case RT_CAUSE_FLOOR_CELL:
+	case RT_CAUSE_FLOOR_PLACE:
 	case RT_CAUSE_CHECKER_PHASE:
 		v->use_rules = true;
 		v->other_floor = true;
@@ -314,6 +329,10 @@ void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int for
 		break;
 	case RT_CAUSE_FLOOR_CELL:
 		snprintf(buf, size, "cells %g wide instead of %g", v.floor.cell, cell);
+		break;
+	case RT_CAUSE_FLOOR_PLACE:
+		snprintf(buf, size, "x from %g to %g, y from %g to %g", v.floor.cx - v.floor.half,
+			 v.floor.cx + v.floor.half, v.floor.cy - v.floor.half, v.floor.cy + v.floor.half);
 		break;
 	case RT_CAUSE_CHECKER_PHASE:
 		snprintf(buf, size, form == 0 ? "from the origin" : form == 1

@@ -79,7 +79,7 @@ static int grade_swatch(struct image *img, int x, int y, int scale, const uint8_
 	return grade_text(img, x + 9 * scale, y, scale, label, white) + 8 * scale;
 }
 
-static const uint8_t grade_tie_rgb[3] = { 40, 90, 255 };
+static const uint8_t grade_tie_rgb[3] = { 30, 50, 110 };
 static const uint8_t grade_outline_rgb[3] = { 0, 230, 230 };
 
 int grade_diff_picture(const struct image *ref, const struct image *sub, const uint8_t *ties,

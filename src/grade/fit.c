@@ -217,7 +217,7 @@ static bool fit_solve(int n, double a[FIT_DIM][FIT_DIM + 1], double *x)
 	return true;
 }
 
-#define FIT_LM_TRIALS 4
+#define FIT_LM_TRIALS 6
 
 /* Gauss-Newton with Levenberg-Marquardt's damping on a grid level, the
  * Jacobian from the render's own gradient and the flow of its points
@@ -263,7 +263,12 @@ static double fit_gn(struct fit_batch *b, double *x, double pixel_deg, double *p
 	fit_move_steps(x, pivot, pixel_deg, h);
 	for (it = 0; it < iterations && cost < INFINITY; it++) {
 		double a[FIT_DIM][FIT_DIM + 1], jt_j[FIT_DIM][FIT_DIM], g[FIT_DIM];
-		double lambdas[FIT_LM_TRIALS] = { lambda * 0.1, lambda, lambda * 10.0, lambda * 100.0 };
+		/* Three dampings, and the least damped step at a quarter, half
+		 * and twice its length: near the truth the linear model's step
+		 * is right in direction more often than in length. */
+		double lambdas[FIT_LM_TRIALS] = { lambda * 0.1, lambda, lambda * 10.0, lambda * 0.1,
+						  lambda * 0.1, lambda * 0.1 };
+		const double lengths[FIT_LM_TRIALS] = { 1.0, 1.0, 1.0, 0.25, 0.5, 2.0 };
 		int best = -1;
 		size_t q;
 
@@ -331,6 +336,8 @@ static double fit_gn(struct fit_batch *b, double *x, double pixel_deg, double *p
 			}
 			if (!fit_solve(FIT_DIM, a, step))
 				memset(step, 0, sizeof(step));
+			for (i = 0; i < FIT_DIM; i++)
+				step[i] *= lengths[k];
 			fit_view_move(x, step, pivot, xs + k * FIT_DIM);
 		}
 		fit_batch_run(b, xs, fs, FIT_LM_TRIALS);
@@ -374,7 +381,7 @@ out:
 /* The hypotheses the first stages carry: the stage-0 refinements of the
  * best starting cameras, each refined on the next levels until the one
  * that fits best there is clear. */
-#define FIT_HYPOTHESES 8
+#define FIT_HYPOTHESES 5
 #define FIT_HYPOTHESIS_STAGES 3
 /* The hypotheses whose floor aliases are tried. */
 #define FIT_ALIAS_HYPOTHESES 3
@@ -502,7 +509,7 @@ static double fit_local_cmaes(struct fit_batch *b, double *x, double pivot, cons
 
 /* The middle of the scene's objects (the floor and unbounded shapes
  * aside): the point the alias moves keep in view. */
-static struct vec3 fit_scene_centre(const struct scene *s)
+struct vec3 fit_scene_centre(const struct scene *s)
 {
 	struct vec3 sum = vec3_make(0.0, 0.0, 0.0);
 	size_t i, n = 0;
@@ -526,7 +533,8 @@ static struct vec3 fit_scene_centre(const struct scene *s)
  * it and zoomed to keep its size, and x moves to the best. */
 #define FIT_ALIAS_REACH 4
 
-static void fit_floor_aliases(struct fit_batch *b, double *x, long *evals)
+static int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][FIT_DIM],
+			     double *fout, int n_out, long *evals)
 {
 	const struct scene_view *v = scene_view_of(b->job->scene);
 	enum { N = 2 * (2 * FIT_ALIAS_REACH + 1) * (2 * FIT_ALIAS_REACH + 1) };
@@ -534,10 +542,10 @@ static void fit_floor_aliases(struct fit_batch *b, double *x, long *evals)
 	struct vec3 eye0;
 	struct camera_params base, p;
 	struct vec3 centre, f0;
-	int i, j, n = 0, k, best = -1;
+	int i, j, n = 0, k, m, best = -1;
 
 	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
-		return;
+		return 0;
 	memset(&base, 0, sizeof(base));
 	fit_params_of(x, &base, &p);
 	eye0 = p.eye;
@@ -573,10 +581,58 @@ static void fit_floor_aliases(struct fit_batch *b, double *x, long *evals)
 		}
 	fit_batch_run(b, xs, fs, n);
 	*evals += n;
+	/* The best n_out, x itself among them whatever its place (the
+	 * blurred level may not yet tell x from its aliases). */
+	memcpy(out[0], xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+	fout[0] = fs[best];
+	fs[best] = INFINITY;
+	for (m = 1; m < n_out; m++) {
+		int pick = -1;
+		for (k = 0; k < n; k++)
+			if (fs[k] < INFINITY && (pick < 0 || fs[k] < fs[pick]))
+				pick = k;
+		if (pick < 0)
+			break;
+		memcpy(out[m], xs + pick * FIT_DIM, sizeof(double) * FIT_DIM);
+		fout[m] = fs[pick];
+		fs[pick] = INFINITY;
+	}
+	return m;
+}
+
+/* Once the camera is sharp, the floor's aliases once more, as they are
+ * (the same direction and field of view): an eye two cells off along the
+ * view is what the blurred levels could not tell apart, and the sharp one
+ * can by the objects.  True when x moved (to a better alias). */
+#define FIT_LAST_ALIAS_STAGE 4
+
+static bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals)
+{
+	const struct scene_view *v = scene_view_of(b->job->scene);
+	double xs[25 * FIT_DIM], fs[25], c = v->floor_cell;
+	int i, j, n = 0, k, best = -1;
+
+	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
+		return false;
+	for (i = -2; i <= 2; i++)
+		for (j = -2; j <= 2; j++) {
+			if (i == 0 && j == 0)
+				continue;
+			memcpy(xs + n * FIT_DIM, x, sizeof(double) * FIT_DIM);
+			xs[n * FIT_DIM + FIT_X] += c * (i + j);
+			xs[n * FIT_DIM + FIT_Y] += c * (i - j);
+			n++;
+		}
+	fit_batch_run(b, xs, fs, n);
+	*evals += n;
 	for (k = 0; k < n; k++)
-		if (fs[k] < fs[best])
+		if (fs[k] < *fx && (best < 0 || fs[k] < fs[best]))
 			best = k;
+	if (best < 0)
+		return false;
 	memcpy(x, xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+	*fx = fs[best];
+	return true;
 }
 
 /* Stage 0: the starts and the coarse search's cameras scored on the
@@ -587,15 +643,15 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 			   double *hf, long *evals, struct diag *d)
 {
 	double xs[(8 + FIT_COARSE_KEEP) * FIT_DIM], fs[8 + FIT_COARSE_KEEP], cs[FIT_COARSE_KEEP];
-	int n = n_starts > 8 ? 8 : n_starts, tries = (int)fit_env("FIT_TRIES", 8), t, k, rc;
+	int n = n_starts > 8 ? 8 : n_starts, tries = (int)fit_env("FIT_TRIES", 6), t, k, rc;
 
 	for (k = 0; k < FIT_HYPOTHESES; k++)
 		hf[k] = INFINITY;
 	for (k = 0; k < n; k++)
 		fit_view_of(&starts[k], xs + k * FIT_DIM);
 	if ((rc = fit_coarse_search(b->job, &starts[0], sub, fit_env("FIT_RADIUS", 160),
-				    fit_env("FIT_SPACING", 40), (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs,
-				    FIT_COARSE_KEEP, d)) < 0)
+				    fit_env("FIT_SPACING", 40), fit_scene_centre(b->job->scene),
+				    (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs, FIT_COARSE_KEEP, d)) < 0)
 		return rc;
 	n += FIT_COARSE_KEEP;
 	fit_batch_run(b, xs, fs, n);
@@ -697,12 +753,39 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			for (n_hyp = 0; n_hyp < FIT_HYPOTHESES && hf[n_hyp] < INFINITY; n_hyp++)
 				;
 		} else {
-			if (s == 1)
+			if (s == 1 && n_hyp > 0) {
+				/* Each of the best hypotheses and its two best
+				 * aliases, scored on this level, go on: the best
+				 * FIT_HYPOTHESES of them. */
+				double more[FIT_ALIAS_HYPOTHESES * 3][FIT_DIM], mf[FIT_ALIAS_HYPOTHESES * 3];
+				int nm = 0, a, t;
 				for (k = 0; k < n_hyp && k < FIT_ALIAS_HYPOTHESES; k++)
-					fit_floor_aliases(&batch, hyp[k], &evals);
+					nm += fit_floor_aliases(&batch, hyp[k], more + nm, mf + nm, 3, &evals);
+				if (nm > 0) {
+					n_hyp = 0;
+					for (a = 0; a < nm; a++) {
+						for (t = 0; t < n_hyp && hf[t] <= mf[a]; t++)
+							;
+						if (t >= FIT_HYPOTHESES)
+							continue;
+						if (n_hyp < FIT_HYPOTHESES)
+							n_hyp++;
+						memmove(hyp + t + 1, hyp + t, sizeof(hyp[0]) * (size_t)(n_hyp - 1 - t));
+						memmove(hf + t + 1, hf + t, sizeof(hf[0]) * (size_t)(n_hyp - 1 - t));
+						memcpy(hyp[t], more[a], sizeof(hyp[t]));
+						hf[t] = mf[a];
+					}
+					for (t = 0; t < n_hyp; t++)
+						pivot[t] = 100.0;
+				}
+			}
 			for (k = 0; k < n_hyp && rc == 0; k++) {
 				hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
 					       st->generations, &evals, d, &rc);
+				if (rc == 0 && s == FIT_LAST_ALIAS_STAGE && n_hyp == 1 &&
+				    fit_final_alias(&batch, hyp[k], &hf[k], &evals))
+					hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
+						       st->generations, &evals, d, &rc);
 				if (rc == 0 && s >= (int)fit_env("FIT_CMA_FROM", 99)) {
 					double h0[FIT_DIM];
 					fit_move_steps(hyp[k], pivot[k], hyp[k][FIT_FOV] / level.h, h0);
@@ -735,6 +818,13 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			n_hyp = n_hyp > 0 ? 1 : 0;
 		out->evals += evals;
 		out->score = hf[0];
+		{
+			/* The given camera on the same level, for the caller to
+			 * weigh the fit by (grey: red and blue swapped alike). */
+			double v0[FIT_DIM];
+			fit_view_of(&starts[0], v0);
+			fit_batch_run(&batch, v0, &out->start_score, 1);
+		}
 		if (getenv("FIT_TRACE"))
 			fprintf(stderr, "fit: [%.2fs] stage %d (%d cells): %.3f after %ld evals  %.2f %.2f %.2f  %.3f %.3f %.3f %.3f\n",
 				fit_clock() - t_start, s, level.n_cells, hf[0], evals,

@@ -92,12 +92,16 @@ double fit_level_score(const struct fit_level *l, const struct grade_job *job,
 		       struct fit_scratch *s);
 
 /* The first look: eyes on a grid of the spacing within radius of the
- * start's, each with the best of a few directions, rolls and fields of
- * view near the start's scored on warps of one wide render; the best
- * n_out cameras (views) and their scores, best first. */
+ * start's (turned about the start's direction) and on an orbit about the
+ * scene's centre (looking at it), each with the best of a few
+ * directions, rolls and fields of view scored on warps of one wide
+ * render; the best n_out cameras (views) and their scores, best first. */
 int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
-		      const struct image *sub, double radius, double spacing,
+		      const struct image *sub, double radius, double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d);
+/* The middle of the scene's objects (the floor and unbounded shapes
+ * aside; the origin when there are none). */
+struct vec3 fit_scene_centre(const struct scene *s);
 
 /* Blurs 3-channel cells (w x h) in place by a Gaussian of sigma cells. */
 void fit_blur(float *cells, float *tmp, int w, int h, double sigma);

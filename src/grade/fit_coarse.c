@@ -42,6 +42,7 @@ struct coarse_target {
 
 struct coarse_eye {
 	struct vec3 eye;
+	struct vec3 dir;		/* the direction its turns are about */
 	int order;			/* its place in the grid, for ties */
 	double score;
 	double view[FIT_DIM];
@@ -56,7 +57,8 @@ struct coarse_work {
 };
 
 /* The wide render from eye e along the start's direction, blurred. */
-static void coarse_wide(const struct coarse_work *w, struct vec3 e, float *img, float *tmp)
+static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 dir, float *img,
+			float *tmp)
 {
 	const int n = COARSE_WIDE_PX;
 	struct camera_params p = *w->start;
@@ -70,7 +72,7 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, float *img, 
 	bool packets = render_packets_wanted(w->job->scene->accel) && !w->job->scene->glass;
 	int x, y;
 
-	p.look = vec3_add(e, vec3_sub(w->start->look, w->start->eye));
+	p.look = vec3_add(e, dir);
 	p.eye = e;
 	p.fov_deg = COARSE_WIDE_FOV;
 	p.near = 0.0;
@@ -94,9 +96,8 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, float *img, 
 		for (x = 0; x < n; x++) {
 			struct color c = color_clamp(col[x]);
 			float *o = img + 3 * (y * n + x);
-			o[0] = (float)(255.0 * c.r);
-			o[1] = (float)(255.0 * c.g);
-			o[2] = (float)(255.0 * c.b);
+			/* Grey, as the fit's levels are. */
+			o[0] = o[1] = o[2] = (float)(255.0 * (c.r + c.g + c.b) / 3.0);
 		}
 	}
 	fit_blur(img, tmp, n, n, 1.0);
@@ -185,15 +186,19 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 	double top[COARSE_REFINE][3], top_score[COARSE_REFINE];
 	size_t a, b, r, f, k;
 
-	coarse_wide(w, ce->eye, img, tmp);
-	p.look = vec3_add(ce->eye, vec3_sub(w->start->look, w->start->eye));
+	struct camera_params base = *w->start;
+
+	coarse_wide(w, ce->eye, ce->dir, img, tmp);
+	p.look = vec3_add(ce->eye, ce->dir);
 	p.eye = ce->eye;
 	p.fov_deg = COARSE_WIDE_FOV;
 	p.near = 0.0;
 	p.aspect = 0.0;
 	ce->score = INFINITY;
+	base.eye = ce->eye;
+	base.look = vec3_add(ce->eye, ce->dir);
 	if (camera_init_rect(&wide, &p, COARSE_WIDE_PX, COARSE_WIDE_PX, &d) < 0 ||
-	    camera_init_rect(&start, w->start, w->t->full_w, w->t->full_h, &d) < 0)
+	    camera_init_rect(&start, &base, w->t->full_w, w->t->full_h, &d) < 0)
 		return;
 	best = *w->start;
 	for (k = 0; k < COARSE_REFINE; k++)
@@ -282,7 +287,8 @@ static int coarse_target_make(struct coarse_target *t, const struct image *sub, 
 					for (c = 0; c < 3; c++)
 						s[c] += sub->pixels[3 * ((size_t)Y * sub->width + X) + c];
 			for (c = 0; c < 3; c++)
-				t->cells[3 * (y * t->w + x) + c] = (float)(s[c] / ((double)(x1 - x0) * (y1 - y0)));
+				t->cells[3 * (y * t->w + x) + c] = (float)((s[0] + s[1] + s[2]) /
+									   (3.0 * (x1 - x0) * (y1 - y0)));
 			t->u[y * t->w + x] = 0.5 * (x0 + x1);
 			t->v[y * t->w + x] = 0.5 * (y0 + y1);
 		}
@@ -334,14 +340,50 @@ static int coarse_eye_cmp(const void *a, const void *b)
 #define COARSE_SECOND 6
 #define COARSE_SECOND_SHRINK 2.5
 
+/* The second grid: eyes around the scene's middle, looking at it, at
+ * distances about the start's, from azimuths either side of the start's
+ * and elevations from the floor up (a student turns the camera to keep
+ * the objects in view). */
+static const double coarse_orbit_dists[] = { 0.6, 0.85, 1.15, 1.6 };
+static const double coarse_orbit_azimuths[] = { -60, -40, -20, 0, 20, 40, 60 };
+static const double coarse_orbit_elevations[] = { 3, 12, 24, 38, 55 };
+#define COARSE_ORBIT_EYES (4 * 7 * 5)
+
+static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
+{
+	const double rad = 3.14159265358979323846 / 180.0;
+	struct vec3 off = vec3_sub(w->start->eye, centre);
+	double dist = vec3_length(off), az0 = atan2(off.y, off.x);
+	size_t a, b, c;
+
+	if (!(dist > 1.0))
+		return n;
+	for (a = 0; a < sizeof(coarse_orbit_dists) / sizeof(double); a++)
+		for (b = 0; b < sizeof(coarse_orbit_azimuths) / sizeof(double); b++)
+			for (c = 0; c < sizeof(coarse_orbit_elevations) / sizeof(double); c++) {
+				double r = dist * coarse_orbit_dists[a], az = az0 + coarse_orbit_azimuths[b] * rad;
+				double el = coarse_orbit_elevations[c] * rad;
+				struct vec3 e = vec3_add(centre, vec3_make(r * cos(el) * cos(az), r * cos(el) * sin(az),
+									   r * sin(el)));
+				if (e.z < 1.0)
+					continue;
+				w->eyes[n].order = n;
+				w->eyes[n].eye = e;
+				w->eyes[n].dir = vec3_sub(centre, e);
+				n++;
+			}
+	return n;
+}
+
 int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
-		      const struct image *sub, double radius, double spacing,
+		      const struct image *sub, double radius, double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)
 {
 	struct coarse_target t;
 	struct coarse_work w;
 	int steps = (int)floor(radius / spacing), i, j, k, n = 0, m, first_n;
-	size_t cap = (size_t)(2 * steps + 1) * (2 * steps + 1) * (2 * steps + 1) + COARSE_SECOND * 27;
+	size_t cap = (size_t)(2 * steps + 1) * (2 * steps + 1) * (2 * steps + 1) + COARSE_SECOND * 27 +
+		     COARSE_ORBIT_EYES;
 	int rc;
 
 	if ((rc = coarse_target_make(&t, sub, d)) < 0) {
@@ -366,8 +408,10 @@ int fit_coarse_search(const struct grade_job *job, const struct camera_params *s
 				if (e.z < 1.0 && !(k == 0 && e.z == start->eye.z))
 					continue;
 				w.eyes[n].order = n;
+				w.eyes[n].dir = vec3_sub(start->look, start->eye);
 				w.eyes[n++].eye = e;
 			}
+	n = coarse_orbit_eyes(&w, centre, n);
 	coarse_run(&w, 0, n);
 	qsort(w.eyes, (size_t)n, sizeof(*w.eyes), coarse_eye_cmp);
 	first_n = n;
@@ -380,6 +424,7 @@ int fit_coarse_search(const struct grade_job *job, const struct camera_params *s
 					if ((i == 0 && j == 0 && k == 0) || e.z < 1.0)
 						continue;
 					w.eyes[n].order = n;
+					w.eyes[n].dir = w.eyes[m].dir;
 					w.eyes[n++].eye = e;
 				}
 	coarse_run(&w, first_n, n);

@@ -207,8 +207,10 @@ int fit_level_grid(struct fit_level *l, const struct image *sub, int w, int h, i
 					s[1] += q[1];
 					s[2] += q[2];
 				}
+			/* Grey: the fit looks at shapes, not colours (an image
+			 * with red and blue swapped has the same camera). */
 			for (i = 0; i < 3; i++)
-				l->target[3 * (y * w + x) + i] = (float)(s[i] / (ss * ss));
+				l->target[3 * (y * w + x) + i] = (float)((s[0] + s[1] + s[2]) / (3.0 * ss * ss));
 		}
 	if (sigma > 0.0) {
 		if (!(tmp = rt_reallocarray(NULL, (size_t)w * (size_t)h * 3, sizeof(*tmp)))) {
@@ -235,9 +237,8 @@ int fit_level_pixels(struct fit_level *l, const struct image *sub, const uint32_
 		const uint8_t *q = sub->pixels + 3 * (size_t)pixels[k];
 		l->sx[k] = (int32_t)(pixels[k] % (uint32_t)sub->width);
 		l->sy[k] = (int32_t)(pixels[k] / (uint32_t)sub->width);
-		l->target[3 * k] = q[0];
-		l->target[3 * k + 1] = q[1];
-		l->target[3 * k + 2] = q[2];
+		l->target[3 * k] = l->target[3 * k + 1] = l->target[3 * k + 2] =
+			(float)((q[0] + q[1] + q[2]) / 3.0);
 	}
 	return 0;
 }
@@ -315,7 +316,7 @@ int fit_level_patches(struct fit_level *l, const struct image *sub, int n, doubl
 						s[c] += l->sw[k] * q[c];
 				}
 			for (c = 0; c < 3; c++)
-				l->target[3 * cell + c] = (float)s[c];
+				l->target[3 * cell + c] = (float)((s[0] + s[1] + s[2]) / 3.0);
 			cell++;
 		}
 	(void)per;
@@ -334,6 +335,7 @@ void fit_level_free(struct fit_level *l)
 
 int fit_scratch_alloc(struct fit_scratch *s, const struct fit_level *l, struct diag *d)
 {
+	s->points = NULL;
 	s->cells = rt_reallocarray(NULL, (size_t)l->n_cells * 3, sizeof(float));
 	s->tmp = rt_reallocarray(NULL, (size_t)l->n_cells * 3, sizeof(float));
 	if (!s->cells || !s->tmp) {
@@ -444,9 +446,10 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 			float *c = s->cells + 3 * ((k + i) / per);
 			struct color q = color_clamp(col[i]);
 			double wt = l->sw ? l->sw[k + i] : 1.0 / per;
-			c[0] += (float)(255.0 * q.r * wt);
-			c[1] += (float)(255.0 * q.g * wt);
-			c[2] += (float)(255.0 * q.b * wt);
+			float grey = (float)(255.0 * (q.r + q.g + q.b) / 3.0 * wt);
+			c[0] += grey;
+			c[1] += grey;
+			c[2] += grey;
 		}
 	}
 	if (l->h > 0)

@@ -33,7 +33,7 @@ struct grade_sample {
 	double w_differing, w_rest;
 };
 
-static int grade_sample_make(const struct image *ref, const struct image *sub,
+static int grade_sample_make(const struct image *ref, const struct image *sub, const uint8_t *skip,
 			     struct grade_sample *smp, struct diag *d)
 {
 	size_t total = (size_t)ref->width * (size_t)ref->height, i, nd = 0, step, taken = 0, rest = 0;
@@ -50,13 +50,14 @@ static int grade_sample_make(const struct image *ref, const struct image *sub,
 			int dv = abs((int)ref->pixels[3 * i + k] - (int)sub->pixels[3 * i + k]);
 			worst = dv > worst ? dv : worst;
 		}
-		differs[i] = worst > 2;
-		nd += differs[i];
+		/* 2: a tie, in neither part. */
+		differs[i] = skip && skip[i] ? 2 : worst > 2;
+		nd += differs[i] == 1;
 	}
 	step = (nd + GRADE_SAMPLE_DIFFERING - 1) / GRADE_SAMPLE_DIFFERING;
 	step = step < 1 ? 1 : step;
 	for (i = 0, nd = 0; i < total; i++) {
-		if (differs[i] && nd++ % step == 0)
+		if (differs[i] == 1 && nd++ % step == 0)
 			smp->pixels[smp->n++] = (uint32_t)i;
 	}
 	smp->n_differing = smp->n;
@@ -129,8 +130,8 @@ static bool grade_same_on(const struct grade_sample *smp, const struct image *im
 /* The figures of ref (and tref, the better kept) transformed by map,
  * against sub; *changes false when the transform leaves ref as it is. */
 static int grade_rank_map(const struct image *ref, const struct image *tref,
-			  const struct image *sub, unsigned map, struct grade_figures *f,
-			  bool *truncated, bool *changes, struct diag *d)
+			  const struct image *sub, const uint8_t *skip, unsigned map,
+			  struct grade_figures *f, bool *truncated, bool *changes, struct diag *d)
 {
 	size_t total = (size_t)ref->width * (size_t)ref->height;
 	struct grade_figures g;
@@ -141,13 +142,13 @@ static int grade_rank_map(const struct image *ref, const struct image *tref,
 	if ((rc = grade_transform_map(ref, map, &t, d)) < 0)
 		return rc;
 	*changes = memcmp(t.pixels, ref->pixels, total * 3) != 0;
-	grade_figures_of(&t, sub, 1, 0, 0, f);
+	grade_figures_skipping(&t, sub, skip, f);
 	image_free(&t);
 	if (!*changes || !tref)
 		return 0;
 	if ((rc = grade_transform_map(tref, map, &t, d)) < 0)
 		return rc;
-	grade_figures_of(&t, sub, 1, 0, 0, &g);
+	grade_figures_skipping(&t, sub, skip, &g);
 	image_free(&t);
 	if (g.psnr > f->psnr) {
 		*f = g;
@@ -158,7 +159,7 @@ static int grade_rank_map(const struct image *ref, const struct image *tref,
 
 /* The nearer to sub of a render's two conversions (timg may be NULL). */
 static void grade_better_of(const struct grade_sample *smp, const struct image *img,
-			    const struct image *timg, const struct image *sub,
+			    const struct image *timg, const struct image *sub, const uint8_t *skip,
 			    struct grade_figures *f, bool *truncated)
 {
 	struct grade_figures g;
@@ -167,13 +168,13 @@ static void grade_better_of(const struct grade_sample *smp, const struct image *
 	if (smp)
 		grade_sample_figures(smp, img, sub, f);
 	else
-		grade_figures_of(img, sub, 1, 0, 0, f);
+		grade_figures_skipping(img, sub, skip, f);
 	if (!timg)
 		return;
 	if (smp)
 		grade_sample_figures(smp, timg, sub, &g);
 	else
-		grade_figures_of(timg, sub, 1, 0, 0, &g);
+		grade_figures_skipping(timg, sub, skip, &g);
 	if (g.psnr > f->psnr) {
 		*f = g;
 		*truncated = true;
@@ -208,6 +209,7 @@ struct grade_todo {
 struct grade_ranking {
 	const struct grade_job *job;
 	const struct image *ref, *tref, *sub;
+	const uint8_t *skip;
 	struct grade_sample smp;
 	bool exact;			/* small: every pixel, no sample */
 	struct grade_todo *todo;
@@ -258,7 +260,7 @@ static int grade_todo_run(struct grade_ranking *g, size_t first, bool full, stru
 			continue;
 		}
 		grade_better_of(every ? NULL : &g->smp, &g->imgs[k], g->tref ? &g->timgs[k] : NULL,
-				g->sub, &r->fig, &r->truncated);
+				g->sub, g->skip, &r->fig, &r->truncated);
 		r->estimated = !every;
 	}
 	return 0;
@@ -367,8 +369,8 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 		memset(&r, 0, sizeof(r));
 		r.cause = a;
 		r.also = b;
-		if ((rc = grade_rank_map(g->ref, g->tref, g->sub, va.map | vb.map, &r.fig, &r.truncated,
-					 &changes, d)) < 0)
+		if ((rc = grade_rank_map(g->ref, g->tref, g->sub, g->skip, va.map | vb.map, &r.fig,
+					 &r.truncated, &changes, d)) < 0)
 			return rc;
 		if (changes && m < GRADE_MAX_PAIRS)
 			pairs[m++] = r;
@@ -424,7 +426,7 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 }
 
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
-		      const struct image *tref, const struct image *sub,
+		      const struct image *tref, const struct image *sub, const uint8_t *skip,
 		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d)
 {
 	struct grade_ranking g;
@@ -439,6 +441,7 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 	g.ref = ref;
 	g.tref = tref;
 	g.sub = sub;
+	g.skip = skip;
 	g.exact = total <= GRADE_SAMPLE_MIN_PIXELS;
 	g.cap = GRADE_MAX_RENDERS;
 	g.todo = rt_calloc(g.cap, sizeof(*g.todo));
@@ -448,7 +451,7 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		rc = diag_fail(d, RT_E_NOMEM, "out of memory for the causes");
 		goto out;
 	}
-	if ((rc = grade_sample_make(ref, sub, &g.smp, d)) < 0)
+	if ((rc = grade_sample_make(ref, sub, skip, &g.smp, d)) < 0)
 		goto out;
 	for (k = 0; k < RT_CAUSE_COUNT; k++) {
 		enum grade_cause c = (enum grade_cause)k;
@@ -463,7 +466,7 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 			r.form = form;
 			r.also = RT_CAUSE_NONE;
 			if (grade_cause_is_transform(c)) {
-				if ((rc = grade_rank_map(ref, tref, sub, v.map, &r.fig, &r.truncated,
+				if ((rc = grade_rank_map(ref, tref, sub, skip, v.map, &r.fig, &r.truncated,
 							 &changes, d)) < 0)
 					goto out;
 				if (changes)

@@ -123,8 +123,9 @@ struct color shade_rules_trace_floor(const struct scene *s, const struct render_
 /* Whether the other floor fl covers the point p of the plane z = 0. */
 static bool rules_floor_covers(const struct shade_floor *fl, struct vec3 p)
 {
-	return fl->half == INFINITY || (p.x >= -fl->half && p.x < fl->half && p.y >= -fl->half &&
-					 p.y < fl->half);
+	double x = p.x - fl->cx, y = p.y - fl->cy;
+
+	return fl->half == INFINITY || (x >= -fl->half && x < fl->half && y >= -fl->half && y < fl->half);
 }
 
 /* The nearest hit with the other floor fl in place of the scene's: the

@@ -34,11 +34,12 @@ struct color shade_rules_trace(const struct scene *s, const struct render_settin
 			       unsigned rules, const struct ray *r, int level);
 
 /* Another floor in place of the scene's (the students' other floors):
- * the plane z = 0 within |x|, |y| < half (INFINITY: to the horizon),
- * cell (i, j) = (floor((x - ox) / cell), floor((y - oy) / cell)), white
- * when i + j is even, black otherwise, with the scene floor's finish. */
+ * the plane z = 0 within |x - cx|, |y - cy| < half (INFINITY: to the
+ * horizon), cell (i, j) = (floor((x - ox) / cell), floor((y - oy) /
+ * cell)), white when i + j is even, black otherwise, with the scene
+ * floor's finish. */
 struct shade_floor {
-	double half, cell, ox, oy;
+	double half, cell, ox, oy, cx, cy;
 };
 
 /* shade_rules_trace with the floor fl (NULL: the scene's own). */

@@ -62,6 +62,14 @@ renders anachor "$RS/anachor.txt" "classic dialect (4 point lights)" "$TRAIL"
 for f in pistachio102 adibashaira ajakil; do
 	renders "$f" "$RS/$f.txt" "classic dialect"
 done
+# A spotlight section of count 0 (the course example and a last "0"): the
+# spot dialect, with no note of numbers left over, and the example's image.
+(cat "$ROOT/scenes/scene.txt"; printf '\n0\n') >"$T/spot0.txt"
+renders spot-zero "$T/spot0.txt" "spot dialect (4 point lights, 0 spotlights)"
+check "spot-zero: nothing ignored" bash -c "! grep -q ignoring '$T/err'"
+run -s 24 -o "$T/spot0.ppm" "$T/spot0.txt"
+run -s 24 -o "$T/classic.ppm" "$ROOT/scenes/scene.txt"
+check "spot-zero: the example's image" cmp -s "$T/spot0.ppm" "$T/classic.ppm"
 refused thr0m3l "$CF/thr0m3l.txt" 79:5 "a count does not describe the data"
 refused abir66-quad "$CF/abir66-quad.txt" 65:1 "unknown object 'quad'; known objects: sphere"
 refused apurbostarry "$RS/apurbostarry.txt" 48:2 "expected an integer (light count), found end of file"

@@ -1,16 +1,28 @@
 # Shared helpers of the CLI test scripts (sourced, not run).  Sets ROOT,
 # DATA (the course files copied into tests/data), W (the whitted binary) and T (a scratch directory removed on exit),
-# and counts checks: ok NAME / bad NAME WHY, then finish prints the summary.
+# and counts checks: ok NAME / bad NAME WHY / skip NAME WHY (a part that
+# cannot run here: said NOT RUN and counted apart, never as passed), then
+# finish prints the summary, "SUITE: N passed, N failed, N skipped[: why]".
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 DATA=$ROOT/tests/data
 W=$ROOT/build/whitted
 pass=0
 fail=0
+skipped=0
+skip_why=""
 
 ok() { pass=$((pass + 1)); }
 bad() {
 	fail=$((fail + 1))
 	printf 'FAIL: %s: %s\n' "$1" "$2"
+}
+skip() {
+	skipped=$((skipped + 1))
+	printf 'NOT RUN: %s: %s\n' "$1" "$2"
+	case "; $skip_why; " in
+	*"; $2; "*) ;;
+	*) skip_why=${skip_why:+$skip_why; }$2 ;;
+	esac
 }
 # check NAME CONDITION-COMMAND...: passes when the command succeeds.
 check() {
@@ -19,19 +31,19 @@ check() {
 	if "$@"; then ok; else bad "$name" "$*"; fi
 }
 finish() {
-	echo "$SUITE: $pass passed, $fail failed"
+	echo "$SUITE: $pass passed, $fail failed, $skipped skipped${skip_why:+: $skip_why}"
 	[ "$fail" -eq 0 ]
 	exit $?
 }
 
 if [ ! -x "$W" ]; then
 	echo "$SUITE: $W is missing (run make all)"
-	echo "$SUITE: 0 passed, 1 failed"
+	echo "$SUITE: 0 passed, 1 failed, 0 skipped"
 	exit 1
 fi
 if [ ! -f "$DATA/README.md" ]; then
 	echo "$SUITE: the test data $DATA is missing"
-	echo "$SUITE: 0 passed, 1 failed"
+	echo "$SUITE: 0 passed, 1 failed, 0 skipped"
 	exit 1
 fi
 T=$(mktemp -d "${TMPDIR:-/tmp}/whitted-$SUITE.XXXXXX")

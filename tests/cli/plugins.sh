@@ -16,7 +16,7 @@ S2P=$ROOT/build/scene2pov
 VIEW=$ROOT/build/whitted-view
 CC=${CC:-cc}
 for so in quad cylinder torus; do
-	[ -f "$P/$so.so" ] || { echo "$SUITE: $P/$so.so is missing (make plugins)"; echo "$SUITE: 0 passed, 1 failed"; exit 1; }
+	[ -f "$P/$so.so" ] || { echo "$SUITE: $P/$so.so is missing (make plugins)"; echo "$SUITE: 0 passed, 1 failed, 0 skipped"; exit 1; }
 done
 cd "$T" || exit 1
 

@@ -12,7 +12,7 @@ SUITE=reportcheck
 CHROMIUM=$(command -v chromium || command -v chromium-browser)
 if [ -z "$CHROMIUM" ]; then
 	echo "reportcheck: NOT RUN: chromium is not installed (make deps)"
-	echo "reportcheck: 0 passed, 1 failed"
+	echo "reportcheck: 0 passed, 1 failed, 0 skipped"
 	exit 1
 fi
 OUT=$ROOT/build/test-output/reportcheck

@@ -1,8 +1,10 @@
 #!/bin/sh
 # End-to-end tests of region renders, the merge, frames and the scripts
 # that distribute them (GNU parallel locally and over ssh to localhost, the
-# Slurm array script run by hand).  Ends with "dist: N passed, N failed";
-# a check that cannot run here is reported NOT RUN, never as passed.
+# Slurm array script run by hand).  Ends with "dist: N passed, N failed,
+# N skipped"; a check whose tools are not installed is reported NOT RUN and
+# counted as skipped, never as passed; one whose tools are installed but
+# that could not run (sshd refusing) fails.
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd)
 W=$top/build/whitted
@@ -13,10 +15,16 @@ cleanup() {
 	rm -rf "$tmp"
 }
 trap cleanup EXIT
-pass=0 fail=0 notrun=0
+pass=0 fail=0 skipped=0 why=""
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 check() { name=$1; shift; if "$@"; then ok; else bad "$name"; fi; }
+# not_run N WHY: N checks that cannot run here.
+not_run() {
+	echo "NOT RUN: $1 checks: $2"
+	skipped=$((skipped + $1))
+	why="${why:-: }${why:+; }$2"
+}
 cd "$tmp" || exit 1
 cp "$top/scenes/scene.txt" scene.txt
 printf '%s\n' 2 9 1 sphere 0 0 10 10 1 0 0 0.4 0.2 0.2 0.2 1 1 -50 50 50 1 1 1 >other.txt
@@ -217,8 +225,7 @@ if command -v parallel >/dev/null 2>&1; then
 	"$top/scripts/render-parallel.sh" --grid 2x2 -o fails.png scene.txt -- -s 24 --bogus >/dev/null 2>&1
 	check "parallel: a failing job fails the run, no output" [ $? = 1 ] && [ ! -e fails.png ]
 else
-	echo "NOT RUN: GNU parallel is not installed"
-	notrun=$((notrun + 1))
+	not_run 6 "GNU parallel is not installed"
 fi
 
 # GNU parallel over ssh to localhost, with a private sshd and a fresh key.
@@ -255,7 +262,11 @@ start_sshd() {
 	done
 	return 1
 }
-if command -v parallel >/dev/null 2>&1 && start_sshd; then
+ssh_tools() {
+	command -v parallel >/dev/null 2>&1 && command -v ssh >/dev/null && command -v ssh-keygen >/dev/null &&
+		[ -x "$(command -v sshd || echo /usr/sbin/sshd)" ]
+}
+if ssh_tools && start_sshd; then
 	login="2/$(id -un)@127.0.0.1"
 	"$top/scripts/render-parallel.sh" --grid 4x4 --sshlogin "$login" -o ssh.png scene.txt -- -s 45 >/dev/null
 	check "ssh: a 4x4 split over ssh to localhost equals the single render" cmp -s ssh.png single45.png
@@ -265,9 +276,15 @@ if command -v parallel >/dev/null 2>&1 && start_sshd; then
 	"$top/scripts/render-parallel.sh" --transfer --frames 4 --sshlogin "$login" -o sfr/ scene.txt -- -s 24 >/dev/null
 	check "ssh --transfer: frames equal the sequential run" diff -r sfr fr
 else
-	echo "NOT RUN: ssh to localhost (no parallel, sshd or ssh; see $tmp/ssh/log)"
+	if ssh_tools; then
+		# Everything is installed: the part could run, so its not
+		# running is a failure.
+		echo "FAIL: ssh to localhost: sshd did not start or let us in (see its log)"
+		fail=$((fail + 1))
+	else
+		not_run 3 "ssh to localhost (no parallel, sshd or ssh)"
+	fi
 	[ ! -f "$tmp/ssh/log" ] || sed 's/^/  sshd: /' "$tmp/ssh/log" | head -n 5
-	notrun=$((notrun + 1))
 fi
 [ -z "$sshd_pid" ] || { kill "$sshd_pid" 2>/dev/null; wait "$sshd_pid" 2>/dev/null; sshd_pid=""; }
 unset PARALLEL_SSH
@@ -336,9 +353,8 @@ if command -v valgrind >/dev/null 2>&1; then
 	vg "$W" -q -s 12 --frames 3 --path badpath.txt -o 'vg-%d.png' scene.txt >/dev/null 2>&1
 	check "valgrind: a bad path file (exit 1, no errors)" [ $? = 1 ]
 else
-	echo "NOT RUN: valgrind is not installed"
-	notrun=$((notrun + 1))
+	not_run 6 "valgrind is not installed"
 fi
 
-echo "dist: $pass passed, $fail failed$([ $notrun = 0 ] || echo ", $notrun not run")"
+echo "dist: $pass passed, $fail failed, $skipped skipped$why"
 [ "$fail" = 0 ]

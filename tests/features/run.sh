@@ -1,6 +1,6 @@
 #!/bin/sh
 # The suites of issue 14's features (antialiasing, textured floors,
-# refraction), each ending with "NAME: N passed, N failed".
+# refraction), each ending with "NAME: N passed, N failed, N skipped".
 set -u
 here=$(dirname "$0")
 st=0

@@ -6,7 +6,7 @@
 # before the mean, so --clamp final's one clamp is per sample); the image
 # is the same for 1 and 3 threads and when rendered as tiles and merged;
 # --samples 1 is byte-identical to no option.  Ends with "samples: N
-# passed, N failed".
+# passed, N failed, N skipped".
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd)
 B=${BUILD:-$top/build}
@@ -62,5 +62,5 @@ for v in 0 17 x 2.5; do
 	elif [ $? -eq 2 ] && grep -q -- --samples "$tmp/err" && [ ! -e "$tmp/e.png" ]; then ok
 	else bad "--samples $v: $(cat "$tmp/err")"; fi
 done
-echo "samples: $pass passed, $fail failed"
+echo "samples: $pass passed, $fail failed, 0 skipped"
 [ "$fail" -eq 0 ]

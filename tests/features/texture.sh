@@ -9,7 +9,7 @@
 # or --no-floor: exit 2); the default unchanged; an RGBA PNG, an XRGB and
 # a top-down BMP read as their opaque pixels, and scene2pov's PNGs of the
 # texels (removed when it fails).  Ends with "texture: N
-# passed, N failed".
+# passed, N failed, N skipped".
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd)
 B=${BUILD:-$top/build}
@@ -186,5 +186,5 @@ if "$B/scene2pov" -q -s 16 --floor-texture "$T/white.bmp" -o "$tmp/pov2/out.pov"
 elif [ -n "$(find "$tmp/pov2" -name '*.png')" ]; then
 	bad "scene2pov left $(find "$tmp/pov2" -name '*.png') after failing"
 else ok; fi
-echo "texture: $pass passed, $fail failed"
+echo "texture: $pass passed, $fail failed, 0 skipped"
 [ "$fail" -eq 0 ]

@@ -159,6 +159,6 @@ int main(int argc, char **argv)
 		       plugin_seeds);
 		failed++;
 	}
-	printf("fuzz-replay: %d passed, %d failed\n", passed, failed);
+	printf("fuzz-replay: %d passed, %d failed, 0 skipped\n", passed, failed);
 	return failed == 0 && passed > 0 ? 0 : 1;
 }

@@ -85,6 +85,41 @@ int support_parse_error(const char *text, struct diag *d)
 	return rc;
 }
 
+const enum rt_simd support_isa_sets[3] = { RT_SIMD_BASE, RT_SIMD_AVX2, RT_SIMD_AVX512 };
+
+const char *support_isa_tag(enum rt_simd s)
+{
+	return s == RT_SIMD_AVX512 ? "avx512" : s == RT_SIMD_AVX2 ? "avx2" : "base";
+}
+
+static bool support_isa_ready(enum rt_simd s, bool compiled, const char *skip_tag)
+{
+	static const char *const names[] = { "SSE2", "AVX2", "AVX-512" };
+
+	if (rt_simd_cpu_has(s) && compiled) {
+		print_message("isa: %s\n", support_isa_tag(s));
+		return true;
+	}
+	if (rt_simd_cpu_has(s)) {
+		print_error("%s is on this CPU, but its code cannot run here (not compiled for it, "
+			    "or WHITTED_ISA caps it)\n", names[s]);
+		fail();
+	}
+	print_message("%s: %s not on this CPU\n", skip_tag, names[s]);
+	return false;
+}
+
+void support_need_isa(enum rt_simd s, bool compiled)
+{
+	if (!support_isa_ready(s, compiled, "skip"))
+		skip();
+}
+
+bool support_isa_part(enum rt_simd s, bool compiled)
+{
+	return support_isa_ready(s, compiled, "part-skip");
+}
+
 int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
 		int argc, char **argv)
 {

@@ -7,7 +7,9 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include <stdbool.h>
 
+#include "base/simd.h"
 #include "scene/scene_impl.h"
 #include "shapes/shapes.h"
 #include "whitted/scenefile.h"
@@ -46,6 +48,30 @@ double support_rng(void);			/* uniform in [0, 1) */
 double support_uniform(double lo, double hi);
 struct vec3 support_random_point(double half);	/* in the cube [-half, half]^3 */
 struct vec3 support_random_direction(void);	/* a unit vector */
+
+/* The sets of instructions a kernel is compiled for (base/simd.h), and
+ * whether a test of set s's kernel can run here: the build has it
+ * (`compiled`) and this processor runs it.  When it can, prints
+ * "isa: NAME" (base, avx2, avx512); tests/unit/run.sh reports the sets
+ * that ran and fails where the processor has a set none of whose tests
+ * ran.  When the processor lacks it, support_need_isa prints "skip: AVX2
+ * not on this CPU" (or AVX-512) and skips the test, which the runner
+ * counts as skipped, never as passed; support_isa_part prints "part-skip:"
+ * instead and returns false, for a test that compares every set it can
+ * and goes on without that one.  A set the processor has but the build
+ * lacks (or WHITTED_ISA caps) fails the test. */
+void support_need_isa(enum rt_simd s, bool compiled);
+bool support_isa_part(enum rt_simd s, bool compiled);
+const char *support_isa_tag(enum rt_simd s);
+/* Three entries of a CMUnitTest table: f run for each set, its state
+ * pointing at the set (read with SUPPORT_ISA_OF), named f_base, f_avx2 and
+ * f_avx512. */
+extern const enum rt_simd support_isa_sets[3];
+#define SUPPORT_ISA_TESTS(f) \
+	{ #f "_base", f, NULL, NULL, (void *)&support_isa_sets[0] }, \
+	{ #f "_avx2", f, NULL, NULL, (void *)&support_isa_sets[1] }, \
+	{ #f "_avx512", f, NULL, NULL, (void *)&support_isa_sets[2] }
+#define SUPPORT_ISA_OF(state) (*(const enum rt_simd *)*(state))
 
 /* Runs the tests whose names contain argv[1] (all without it). */
 int support_run(const char *group, const struct CMUnitTest *tests, size_t n,

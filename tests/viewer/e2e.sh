@@ -40,7 +40,7 @@ ok() { pass=$((pass + 1)); echo "  ok   $1"; }
 bad() { fail=$((fail + 1)); echo "  FAIL $1"; }
 check() { if [ "$1" = 0 ]; then ok "$2"; else bad "$2"; fi; }
 finish() {
-	echo "viewer-e2e: $pass passed, $fail failed"
+	echo "viewer-e2e: $pass passed, $fail failed, 0 skipped"
 	[ "$fail" = 0 ]
 	exit
 }

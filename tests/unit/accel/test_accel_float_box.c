@@ -106,10 +106,7 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 	long trials = 0, floats = 0, entered = 0, ties = 0;
 
 	(void)state;
-	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
-		print_message("no AVX-512 here: the float box tests cannot run\n");
-		skip();
-	}
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
 	support_rng_seed(20261203);
 	for (trials = 0; trials < TRIALS; trials++) {
 		struct bvh8_node n;
@@ -187,10 +184,7 @@ static void test_float_box_tests_of_packets_enter_every_box_the_double_test_ente
 	long packets = 0, floats = 0, entered = 0;
 
 	(void)state;
-	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
-		print_message("no AVX-512 here: the float box tests cannot run\n");
-		skip();
-	}
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
 	support_rng_seed(3);
 	for (packets = 0; packets < TRIALS / ACCEL_PACKET; packets++) {
 		struct bvh4_node n4;
@@ -263,10 +257,7 @@ static void test_float_box_tests_origins_below_the_normal_floats(void **state)
 	int xmask, fmask, c, k;
 
 	(void)state;
-	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
-		print_message("no AVX-512 here: the float box tests cannot run\n");
-		skip();
-	}
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
 	memset(&n, 0, sizeof(n));
 	for (c = 0; c < 8; c++) {
 		n.slot[c] = 1;
@@ -298,10 +289,7 @@ static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **
 	int xmask, i;
 
 	(void)state;
-	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
-		print_message("no AVX-512 here: the float box tests cannot run\n");
-		skip();
-	}
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
 	support_rng_seed(7);
 	random_node(&n, 1.0);
 	for (i = 0; i < 5; i++) {
@@ -339,10 +327,7 @@ static void test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doub
 	int k;
 
 	(void)state;
-	if (!accel_walk_usable(ACCEL_WALK_AVX512)) {
-		print_message("no AVX-512 here: the float box tests cannot run\n");
-		skip();
-	}
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
 	support_rng_seed(13);
 	random_node4(&n4, 1.0);
 	for (k = 0; k < 60000; k++) {

@@ -210,7 +210,7 @@ static void test_grade_allocation_failures(void **state)
 	assert_true(n > 1000);
 	for (k = 1;; k++) {
 		rt_alloc_fail_from(k);
-		rc = grade_rank_causes(&job, &ref, &tref, &sub, ranks, &n, &d);
+		rc = grade_rank_causes(&job, &ref, &tref, &sub, NULL, ranks, &n, &d);
 		rt_alloc_fail_from(0);
 		if (rc == 0)
 			break;

@@ -7,9 +7,11 @@
  * new version's table (only the current version's is checked, so the old
  * one goes).  The numbers are worked out by hand from the declarations for
  * LP64 (8-byte pointers, size_t and double, 4-byte int and unsigned, each
- * member aligned to its size), not read from the compiler. */
+ * member aligned to its size), not read from the compiler.  And the
+ * loader refuses plugins of the versions beside this one. */
 #include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "plugin/loader.h"
 #include "support.h"
@@ -154,11 +156,42 @@ static void test_abi_host_is_this_version(void **state)
 	assert_non_null(plugin_host()->ray_triangle);
 }
 
+/* A plugin built for the version before this one (whose layout is the
+ * nearest) or after it is refused before its init runs, with the message
+ * naming both versions: there is no compatibility range (plugin.h).  The
+ * Makefile builds them from tests/plugins/bad_abi.c. */
+static void test_abi_neighbour_versions_refused(void **state)
+{
+	static const struct {
+		const char *path;
+		unsigned abi;
+	} cases[] = {
+		{ RT_TEST_PLUGIN_DIR "/../test-plugins/abi_prev.so", WHITTED_PLUGIN_ABI - 1 },
+		{ RT_TEST_PLUGIN_DIR "/../test-plugins/abi_next.so", WHITTED_PLUGIN_ABI + 1 },
+	};
+	size_t k;
+
+	(void)state;
+	for (k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
+		char want[1024];
+		struct diag d;
+
+		snprintf(want, sizeof(want),
+			 "plugin %s: built for plugin ABI version %u, but this whitted supports version %u only",
+			 cases[k].path, cases[k].abi, WHITTED_PLUGIN_ABI);
+		assert_int_equal(plugin_load(cases[k].path, &d), -RT_E_RANGE);
+		if (!strstr(d.msg, want))
+			fail_msg("'%s' lacks '%s'", d.msg, want);
+		assert_int_equal(plugin_count(), 0);
+	}
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_abi_layout_is_pinned),
 		cmocka_unit_test(test_abi_host_is_this_version),
+		cmocka_unit_test(test_abi_neighbour_versions_refused),
 	};
 
 	return SUPPORT_RUN(tests, argc, argv);

@@ -182,19 +182,17 @@ static void check_rays(const struct hit_lanes_set *set, const char *name)
 	}
 }
 
+/* Each set on its own, skipped (and counted so) where this processor
+ * lacks it. */
 static void test_hit_lanes_sets(void **state)
 {
-	(void)state;
-	check_set(&hit_lanes_base, "base");
-	check_rays(&hit_lanes_base, "base");
-	if (hit_lanes_avx2.turn && rt_simd_cpu_has(RT_SIMD_AVX2)) {
-		check_set(&hit_lanes_avx2, "avx2");
-		check_rays(&hit_lanes_avx2, "avx2");
-	}
-	if (hit_lanes_avx512.turn && rt_simd_cpu_has(RT_SIMD_AVX512)) {
-		check_set(&hit_lanes_avx512, "avx512");
-		check_rays(&hit_lanes_avx512, "avx512");
-	}
+	const struct hit_lanes_set *const sets[3] = { &hit_lanes_base, &hit_lanes_avx2,
+						      &hit_lanes_avx512 };
+	enum rt_simd isa = SUPPORT_ISA_OF(state);
+
+	support_need_isa(isa, sets[isa]->turn != NULL);
+	check_set(sets[isa], support_isa_tag(isa));
+	check_rays(sets[isa], support_isa_tag(isa));
 }
 
 #define N_SHAPES 7
@@ -311,7 +309,7 @@ static void test_hit_lanes_fill(void **state)
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_hit_lanes_sets),
+		SUPPORT_ISA_TESTS(test_hit_lanes_sets),
 		cmocka_unit_test(test_hit_lanes_fill),
 	};
 

@@ -1,7 +1,8 @@
 /* A block's rays in packets (render_packet.c) against one ray at a time:
  * the same image to the byte and the same ray counts, for scenes big
  * enough that packets are the default, with the classic lights and with a
- * spotlight and a falloff (render_direct_full), reflective shapes, a
+ * spotlight and a falloff (render_direct_full), reflective shapes, glass
+ * that reflects nothing, a light in the floor's plane (N.L = 0), a
  * region whose edges cut the 4x4 packets, and several threads. */
 #define _POSIX_C_SOURCE 200809L	/* setenv */
 #include <stdlib.h>
@@ -31,11 +32,15 @@ static double uniform(double lo, double hi)
 }
 
 /* The course scene and 600 small spheres and triangles over it (some of
- * them mirrors), the floor, and with `special` a spotlight with a falloff. */
-static struct scene *busy_scene(bool special)
+ * them mirrors, and with `glass` some of them glass that reflects nothing,
+ * kr 0, whose hits only the shading one ray at a time can shade), the
+ * floor, with `special` a spotlight with a falloff, and with `in_plane` a
+ * light more in the floor's plane z = 0 (N.L = 0 on the whole floor). */
+static struct scene *busy_scene(bool special, bool glass, bool in_plane)
 {
 	static const struct material dull = { { 0.8, 0.6, 0.4 }, 0.1, 0.6, 0.3, 0.0, 8, 0.0, 1.0 };
 	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.5, 20, 0.0, 1.0 };
+	static const struct material clear = { { 0.8, 1, 0.9 }, 0.1, 0.3, 0.5, 0.0, 40, 0.8, 1.5 };
 	struct scene *s = support_parse(course_scene);
 	struct diag d;
 	int i;
@@ -43,7 +48,7 @@ static struct scene *busy_scene(bool special)
 	rng_state = 0x1234567u;
 	for (i = 0; i < 600; i++) {
 		struct vec3 c = vec3_make(uniform(-60, 60), uniform(-40, 60), uniform(2, 60));
-		const struct material *m = rng() < 0.3 ? &mirror : &dull;
+		const struct material *m = rng() < 0.3 ? &mirror : glass && i % 5 == 1 ? &clear : &dull;
 		struct shape *sh;
 
 		if (i % 2)
@@ -66,6 +71,8 @@ static struct scene *busy_scene(bool special)
 		l.falloff = 1e-5;
 		assert_int_equal(scene_add_light_full(s, &l, &d), 0);
 	}
+	if (in_plane)
+		assert_int_equal(scene_add_light(s, vec3_make(0, 150, 0), color_make(1, 1, 1), &d), 0);
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	/* Big enough for the SIMD walks, under which packets run by
@@ -101,11 +108,11 @@ static void render_with(const struct scene *s, const char *packets, int threads,
 	assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
 }
 
-static void check_same(bool special)
+static void check_same(bool special, bool glass, bool in_plane)
 {
 	static const char *const modes[] = { "1", NULL };
 	static const int threads[] = { 1, 3 };
-	struct scene *s = busy_scene(special);
+	struct scene *s = busy_scene(special, glass, in_plane);
 	struct image one, other;
 	struct ray_counts n1, n;
 	size_t i, j, lit = 0, bytes = (size_t)(87 - 3) * (size_t)(79 - 6) * 3;
@@ -116,6 +123,7 @@ static void check_same(bool special)
 	/* The view's upper part is sky: about a third of the bytes lit. */
 	assert_true(lit > bytes / 4);
 	assert_true(n1.shadow > n1.primary && n1.reflection > 1000);
+	assert_true(!glass || n1.refraction > 100);
 	for (i = 0; i < sizeof(modes) / sizeof(modes[0]); i++)
 		for (j = 0; j < sizeof(threads) / sizeof(threads[0]); j++) {
 			render_with(s, modes[i], threads[j], 3, 6, 87, 79, &other, &n);
@@ -132,13 +140,49 @@ static void check_same(bool special)
 static void test_render_packet_classic_lights_same_image(void **state)
 {
 	(void)state;
-	check_same(false);
+	check_same(false, false, false);
 }
 
 static void test_render_packet_spot_and_falloff_same_image(void **state)
 {
 	(void)state;
-	check_same(true);
+	check_same(true, false, false);
+}
+
+/* Glass that reflects nothing (kr 0): its hits need the transmitted ray,
+ * which the packets' shading a hit a lane does not trace; they must go
+ * to the shading of one ray at a time, whose image and counts these are. */
+static void test_render_packet_glass_same_image(void **state)
+{
+	(void)state;
+	check_same(false, true, false);
+}
+
+/* A light in the floor's plane: N.L is exactly 0 (+0 or -0) at every
+ * floor point, where the light adds nothing and asks no shadow ray, in
+ * the packets' shading as in one ray's (the same image and ray counts),
+ * on the big tree's packets and on the course scene's small one. */
+static void test_render_packet_light_in_a_surface_plane(void **state)
+{
+	struct scene *s = support_parse(course_scene);
+	struct image one, other;
+	struct ray_counts n1, n;
+	struct diag d;
+
+	(void)state;
+	check_same(false, false, true);
+	assert_int_equal(scene_add_light(s, vec3_make(0, 150, 0), color_make(1, 1, 1), &d), 0);
+	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	render_with(s, "0", 1, 0, 0, 90, 90, &one, &n1);
+	render_with(s, "1", 2, 0, 0, 90, 90, &other, &n);
+	assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
+	assert_int_equal(n.primary, n1.primary);
+	assert_int_equal(n.shadow, n1.shadow);
+	assert_int_equal(n.reflection, n1.reflection);
+	image_free(&one);
+	image_free(&other);
+	scene_destroy(s);
 }
 
 /* On a small tree (the course scene alone: packets a ray a lane by
@@ -175,6 +219,7 @@ static void check_small_tree(int extra, bool spot)
 {
 	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.6, 20, 0.0, 1.0 };
 	static const struct material glass = { { 0.9, 1, 0.9 }, 0.1, 0.3, 0.4, 0.2, 30, 0.7, 1.5 };
+	static const struct material clear = { { 0.8, 1, 0.9 }, 0.1, 0.3, 0.5, 0.0, 40, 0.8, 1.5 };
 	static const enum accel_walk lanes[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2, ACCEL_WALK_AVX512 };
 	struct scene *s = support_parse(course_scene);
 	struct image one, other;
@@ -186,7 +231,7 @@ static void check_small_tree(int extra, bool spot)
 	rng_state = 0x9876543u;
 	for (i = 0; i < 40; i++) {
 		struct vec3 c = vec3_make(uniform(-50, 50), uniform(-30, 50), uniform(2, 50));
-		const struct material *m = i % 7 == 0 ? &glass : &mirror;
+		const struct material *m = i % 7 == 0 ? &glass : i % 7 == 3 ? &clear : &mirror;
 		struct shape *sh = i % 2 ? sphere_create(c, uniform(2, 8), m)
 				   : triangle_create(c, vec3_add(c, vec3_make(uniform(-9, 9), 0, uniform(-9, 9))),
 						     vec3_add(c, vec3_make(uniform(-9, 9), uniform(-9, 9), 0)), m);
@@ -215,7 +260,8 @@ static void check_small_tree(int extra, bool spot)
 	render_with(s, "0", 1, 0, 0, 90, 90, &one, &n1);
 	assert_true(n1.reflection > n1.primary / 2 && n1.refraction > 0);
 	for (k = 0; k < sizeof(lanes) / sizeof(lanes[0]); k++) {
-		if (!accel_walk_usable(lanes[k]))
+		if (k > 0 && !support_isa_part(k == 1 ? RT_SIMD_AVX2 : RT_SIMD_AVX512,
+						accel_walk_usable(lanes[k])))
 			continue;
 		s->accel->rays = lanes[k];
 		assert_int_equal(accel_packets_scatter_pay(s->accel), lanes[k] != ACCEL_WALK_BASE);
@@ -251,6 +297,8 @@ int main(int argc, char **argv)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_render_packet_classic_lights_same_image),
 		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
+		cmocka_unit_test(test_render_packet_glass_same_image),
+		cmocka_unit_test(test_render_packet_light_in_a_surface_plane),
 		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
 		cmocka_unit_test(test_render_packet_small_tree_reflections),
 		cmocka_unit_test(test_render_packet_small_tree_many_lights_and_a_spot),

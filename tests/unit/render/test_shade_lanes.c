@@ -3,8 +3,9 @@
  * shading one hit at a time, to the bit: random hits with random
  * materials (shininess 1, whole and fractional, ambient, diffuse,
  * specular and mirror weights), colours beyond 1, one to eight coloured
- * lights some of them blocked, lights behind the surface (N.L <= 0) and
- * at the point (a distance within the offset), a NaN N.L, a reflection's
+ * lights some of them blocked, lights behind the surface (N.L < 0), in
+ * its plane (N.L = +0 and -0) and at the point (a distance within the
+ * offset), a NaN N.L, a reflection's
  * colour or none, colours clamped at each level or only at the end; and
  * the count of shadow rays asked about. */
 #include <math.h>
@@ -131,7 +132,9 @@ static void check_set(shade_lanes_fn *set, const char *name)
 				if (u < 0.05)
 					dist = h[i].eps * support_rng();	/* the light at the point */
 				l = vec3_scale(to, 1.0 / vec3_length(to));
-				nl = u > 0.97 ? NAN : vec3_dot(h[i].n, l);
+				/* N.L exactly +0 and -0 (a light in the surface's
+				 * plane, on either side): no light, no shadow ray. */
+				nl = u > 0.97 ? NAN : u > 0.94 ? -0.0 : u > 0.91 ? 0.0 : vec3_dot(h[i].n, l);
 				dl->lx[i] = l.x;
 				dl->ly[i] = l.y;
 				dl->lz[i] = l.z;
@@ -164,21 +167,28 @@ static void check_set(shade_lanes_fn *set, const char *name)
 	}
 }
 
-static void test_shade_lanes_every_set(void **state)
+/* Each set on its own (skipped, and counted so, where this processor
+ * lacks it), and the one chosen at run time. */
+static void test_shade_lanes_set(void **state)
+{
+	shade_lanes_fn *const sets[3] = { shade_lanes_base, shade_lanes_avx2, shade_lanes_avx512 };
+	enum rt_simd isa = SUPPORT_ISA_OF(state);
+
+	support_need_isa(isa, sets[isa] != NULL);
+	check_set(sets[isa], support_isa_tag(isa));
+}
+
+static void test_shade_lanes_chosen_set(void **state)
 {
 	(void)state;
-	check_set(shade_lanes_base, "base");
-	if (shade_lanes_avx2 && rt_simd_cpu_has(RT_SIMD_AVX2))
-		check_set(shade_lanes_avx2, "avx2");
-	if (shade_lanes_avx512 && rt_simd_cpu_has(RT_SIMD_AVX512))
-		check_set(shade_lanes_avx512, "avx512");
 	check_set(shade_lanes, "chosen");
 }
 
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_shade_lanes_every_set),
+		SUPPORT_ISA_TESTS(test_shade_lanes_set),
+		cmocka_unit_test(test_shade_lanes_chosen_set),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }

@@ -23,22 +23,19 @@
 
 static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.0 };
 
-/* The sets this processor runs, with their names. */
-static int usable_sets(const struct solve_packet_set **sets, const char **names)
+/* The set the test is run for (its state: SUPPORT_ISA_TESTS), with its
+ * name; the test is skipped, and counted so, where this processor lacks
+ * it. */
+static int usable_sets(void **state, const struct solve_packet_set **sets, const char **names)
 {
-	int n = 0;
+	static const struct solve_packet_set *const all[3] = { &solve_packet_base, &solve_packet_avx2,
+							       &solve_packet_avx512 };
+	enum rt_simd isa = SUPPORT_ISA_OF(state);
 
-	sets[n] = &solve_packet_base;
-	names[n++] = "base";
-	if (solve_packet_avx2.sphere && rt_simd_cpu_has(RT_SIMD_AVX2)) {
-		sets[n] = &solve_packet_avx2;
-		names[n++] = "avx2";
-	}
-	if (solve_packet_avx512.sphere && rt_simd_cpu_has(RT_SIMD_AVX512)) {
-		sets[n] = &solve_packet_avx512;
-		names[n++] = "avx512";
-	}
-	return n;
+	support_need_isa(isa, all[isa]->sphere != NULL);
+	sets[0] = all[isa];
+	names[0] = support_isa_tag(isa);
+	return 1;
 }
 
 /* A packet of RT_PACKET_MAX rays, each with its interval. */
@@ -162,7 +159,7 @@ static void test_solve_packet_sphere(void **state)
 {
 	const struct solve_packet_set *sets[3];
 	const char *names[3];
-	int n_sets = usable_sets(sets, names), k, i, j;
+	int n_sets = usable_sets(state, sets, names), k, i, j;
 
 	(void)state;
 	support_rng_seed(41);
@@ -238,7 +235,7 @@ static void test_solve_packet_triangle(void **state)
 {
 	const struct solve_packet_set *sets[3];
 	const char *names[3];
-	int n_sets = usable_sets(sets, names), k, i, j;
+	int n_sets = usable_sets(state, sets, names), k, i, j;
 
 	(void)state;
 	support_rng_seed(43);
@@ -315,7 +312,7 @@ static void test_solve_packet_floor(void **state)
 {
 	const struct solve_packet_set *sets[3];
 	const char *names[3];
-	int n_sets = usable_sets(sets, names), k, i, j, f;
+	int n_sets = usable_sets(state, sets, names), k, i, j, f;
 	struct shape *floors[2];
 
 	(void)state;
@@ -466,7 +463,7 @@ static void test_solve_packet_floor_cells(void **state)
 {
 	const struct solve_packet_set *sets[3];
 	const char *names[3];
-	int n_sets = usable_sets(sets, names), k, i, j, ch;
+	int n_sets = usable_sets(state, sets, names), k, i, j, ch;
 
 	(void)state;
 	support_rng_seed(43);
@@ -515,7 +512,7 @@ static void test_solve_packet_normal_methods(void **state)
 {
 	const struct solve_packet_set *sets[3];
 	const char *names[3];
-	int n_sets = usable_sets(sets, names), k, i, j, ch, m;
+	int n_sets = usable_sets(state, sets, names), k, i, j, ch, m;
 	struct shape *shapes[5];
 	char path[] = "/tmp/whitted-cells-XXXXXX";
 	struct image img;
@@ -602,12 +599,12 @@ static void test_solve_packet_normal_methods(void **state)
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_solve_packet_sphere),
-		cmocka_unit_test(test_solve_packet_triangle),
-		cmocka_unit_test(test_solve_packet_floor),
+		SUPPORT_ISA_TESTS(test_solve_packet_sphere),
+		SUPPORT_ISA_TESTS(test_solve_packet_triangle),
+		SUPPORT_ISA_TESTS(test_solve_packet_floor),
 		cmocka_unit_test(test_solve_packet_shape_methods),
-		cmocka_unit_test(test_solve_packet_floor_cells),
-		cmocka_unit_test(test_solve_packet_normal_methods),
+		SUPPORT_ISA_TESTS(test_solve_packet_floor_cells),
+		SUPPORT_ISA_TESTS(test_solve_packet_normal_methods),
 	};
 	return SUPPORT_RUN(tests, argc, argv);
 }

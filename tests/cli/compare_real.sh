@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# whitted compare and grade on what students really hand in: images from
+# another camera (rendered by the independent renderer, with and without a
+# mistake), two mistakes at once, any recursion level, another floor, a
+# half turn, gamma with a truncating writer, a textured floor, ties at an
+# odd size, a count-driven scene file (--lenient), where it differs object
+# by object, the difference picture's legend; and grade over a Moodle
+# folder, a zip file, two scenes and a points table.
+# Usage: tests/cli/compare_real.sh [BUILD/whitted]
+SUITE=comparereal
+. "$(dirname "$0")/lib.sh"
+[ -n "${1:-}" ] && W=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+REF=$ROOT/tests/reference/ref_render.py
+SCENE=$ROOT/scenes/scene.txt
+I=$T/img
+mkdir -p "$I"
+# jq-less JSON checks: python3 -c 'CODE' FILE, the object as j.
+json() {
+	local name=$1 code=$2
+	check "$name" python3 -c "import json, sys
+j = json.load(open(sys.argv[1]))
+$code" "$T/out"
+}
+
+# --- Another camera: the student moved it before the capture.  The
+# independent renderer draws the course example from a camera moved and
+# turned the way the keyboard moves it; compare is given no camera.
+CAM=(--eye 38,-172,46 --look 2,-60,14 --up 0.05,0.25,0.97 --fov 72)
+python3 "$REF" "$SCENE" "$I/moved.ppm" --size 96 "${CAM[@]}"
+run compare -q --json "$SCENE" "$I/moved.ppm"
+check moved-exit [ "$rc" -eq 0 ]
+json moved-json 'assert j["verdict"] == "match" and j["camera"]["moved"] is True, j["camera"]
+assert j["best"]["causes"] == ["camera"] and j["best"]["explains"] is True, j["best"]
+assert j["camera"]["psnr_given"] < 20, j["camera"]'
+# The camera found renders what the true one does (>= 35 dB).
+FOUND=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["camera"]["options"])' "$T/out")
+run compare -q --json --no-camera-fit $FOUND "$SCENE" "$I/moved.ppm"
+json moved-found-renders 'assert j["psnr"] is None or j["psnr"] >= 28, j["psnr"]'
+run compare -q "$SCENE" "$I/moved.ppm"
+check moved-text grep -q '^verdict: MATCH at the camera found$' "$T/out"
+check moved-says grep -q '^your camera differs: found --eye .* --fov .*; at that camera your image matches' "$T/out"
+# --no-camera-fit judges at the given camera: it differs.
+expect_rc() { [ "$rc" -eq "$1" ]; }
+run compare -q --no-camera-fit "$SCENE" "$I/moved.ppm"
+check moved-no-fit expect_rc 3
+
+# ... and a mistake on top: named at the camera found.
+python3 "$REF" "$SCENE" "$I/moved-noshadow.ppm" --size 96 "${CAM[@]}" --mistake no-shadows
+run compare -q --json "$SCENE" "$I/moved-noshadow.ppm"
+json moved-mistake 'assert j["camera"]["moved"] is True, j["camera"]
+assert j["first"] == ["no-shadows"], j["first"]
+assert j["best"]["causes"] == ["camera", "no-shadows"], j["best"]'
+
+# --- Ties: a correct render at an odd size, where the middle row's rays
+# meet the floor exactly on a cell's edge: either colour is right.
+python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
+run compare -q --json -s 129 "$SCENE" "$I/odd.ppm"
+json odd-size-match 'assert j["verdict"] == "match", (j["verdict"], j["off2"])
+assert j["ties"] > 0, j["ties"]'
+
+# --- Any recursion level: no reflections at all, and two levels short.
+"$W" -q -s 48 -r 1 -o "$I/r1.png" "$SCENE"
+run compare -q --json -s 48 "$SCENE" "$I/r1.png"
+json no-reflections 'assert j["first"] == ["no-reflections"] and j["causes"][0]["explains"], j["first"]'
+"$W" -q -s 48 -r 2 -o "$I/r2.png" "$SCENE"
+run compare -q -s 48 "$SCENE" "$I/r2.png"
+check recursion-two grep -q '^  1\. another recursion level (recursion level 2 instead of 4) .*explains the image' "$T/out"
+
+# --- Two transforms at once: a half turn (the right vector and the up
+# vector both wrong), which neither alone explains.
+python3 "$REF" "$SCENE" "$I/ref48.ppm" --size 48
+python3 - "$I/ref48.ppm" "$I/half.ppm" "$I/flip-rb.ppm" <<'PY'
+import sys
+d = open(sys.argv[1], 'rb').read(); m, dims, mx, px = d.split(b'\n', 3)
+w, h = map(int, dims.split())
+rows = [px[3 * w * y:3 * w * (y + 1)] for y in range(h)]
+half = b''.join(bytes(b for x in range(w - 1, -1, -1) for b in r[3 * x:3 * x + 3]) for r in reversed(rows))
+flip = b''.join(reversed(rows))
+rb = bytearray(flip); rb[0::3], rb[2::3] = flip[2::3], flip[0::3]
+for name, data in ((sys.argv[2], half), (sys.argv[3], bytes(rb))):
+    open(name, 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + data)
+PY
+run compare -q --json -s 48 "$SCENE" "$I/half.ppm"
+json half-turn 'assert j["first"] == ["mirrored+upside-down"] and j["causes"][0]["explains"], j["first"]
+assert j["causes"][0]["pair"] is True'
+run compare -q -s 48 "$SCENE" "$I/half.ppm"
+check half-turn-words grep -q 'the image turned half round' "$T/out"
+run compare -q --json -s 48 "$SCENE" "$I/flip-rb.ppm"
+json flip-red-blue 'assert j["first"] == ["upside-down+red-blue"], j["first"]'
+
+# --- A render mistake and a transform at once: the highlight left white
+# in an image whose red and blue are swapped.
+python3 "$REF" "$SCENE" "$I/white.ppm" --size 48 --mistake white-highlight
+python3 - "$I/white.ppm" "$I/white-rb.ppm" <<'PY'
+import sys
+d = open(sys.argv[1], 'rb').read(); m, dims, mx, px = d.split(b'\n', 3)
+out = bytearray(px); out[0::3], out[2::3] = px[2::3], px[0::3]
+open(sys.argv[2], 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + bytes(out))
+PY
+run compare -q --json -s 48 "$SCENE" "$I/white-rb.ppm"
+json pair 'assert j["first"] == ["red-blue+white-highlight"], j["first"]
+assert j["best"]["causes"] == ["red-blue", "white-highlight"] and j["best"]["explains"], j["best"]'
+
+# --- Gamma written by a truncating program: explained whole.
+python3 "$REF" "$SCENE" "$I/gamma-trunc.ppm" --size 48 --mistake gamma --truncate
+run compare -q --json -s 48 "$SCENE" "$I/gamma-trunc.ppm"
+json gamma-truncated 'assert j["first"] == ["gamma"] and j["causes"][0]["explains"], j["causes"][:2]'
+
+# --- Another floor: twice as wide, cells twice as large (the independent
+# renderer's --floor).
+python3 "$REF" "$SCENE" "$I/wide.ppm" --size 64 --floor 2000,20
+run compare -q --json -s 64 --no-camera-fit "$SCENE" "$I/wide.ppm"
+json floor-size 'assert j["first"] == ["floor-size"] and j["causes"][0]["explains"], j["first"]
+assert "2000 wide instead of 1000" in j["causes"][0]["with"], j["causes"][0]'
+python3 "$REF" "$SCENE" "$I/cells.ppm" --size 64 --floor 1000,40
+run compare -q --json -s 64 --no-camera-fit "$SCENE" "$I/cells.ppm"
+json floor-cell 'assert j["first"] == ["floor-cell"] and j["causes"][0]["explains"], j["first"]'
+
+# --- Object by object: one sphere's colour changed in the file.
+# (Sphere 1, green, made magenta: its reflections change a little of the
+# others too.)
+sed '0,/^0.0 1.0 0.0/s//1.0 0.0 1.0/' "$SCENE" >"$T/recoloured.txt"
+cmp -s "$T/recoloured.txt" "$SCENE" && bad recolour "the scene was not changed"
+"$W" -q -s 64 -o "$I/recoloured.png" "$T/recoloured.txt"
+run compare -q --json -s 64 --no-camera-fit --diff "$T/wd/d.png" "$SCENE" "$I/recoloured.png"
+json objects 'obj = {(o["keyword"], o["index"]): o for o in j["objects"]}
+assert obj[("sphere", 1)]["off2"] > 0.9, obj
+assert all(o["off2"] < 0.3 for k, o in obj.items() if k != ("sphere", 1)), obj
+assert "sphere 1 differs" in j["objects_line"] and "sphere 2" not in j["objects_line"], j["objects_line"]'
+# The difference picture: twice as wide, a legend band under it.
+check diff-size python3 - "$T/wd/d.png" <<'PY'
+import struct, sys, zlib
+d = open(sys.argv[1], 'rb').read()
+w, h = struct.unpack('>II', d[16:24])
+assert w == 128 and h > 64 and h <= 64 + 40, (w, h)
+PY
+
+# --- A textured floor (the Jan 2023 bonus task): judged without it.
+SR=$DATA/student-renders
+run compare -q --json --no-camera-fit -s 768 --eye 0,-160,60 --look 0,0,60 --up 0,0,1 \
+	"$SR/sr02-scene.txt" "$SR/sr02.png"
+json textured 'assert j["floor_textured"] is True and "textured" in j["diagnosis"], j["diagnosis"]'
+
+# --- A count-driven scene file: refused by the strict reading at its
+# location, compared with --lenient (the rest ignored with a note).
+run compare -q --no-camera-fit -s 700 "$SR/sr35-scene.txt" "$SR/sr35.png"
+check strict-refuses [ "$rc" -eq 1 ] && grep -q 'sr35-scene.txt:79:5: error' "$T/err"
+run compare --lenient --no-camera-fit -s 700 "$SR/sr35-scene.txt" "$SR/sr35.png"
+check lenient-reads [ "$rc" -eq 3 ]
+check lenient-note grep -q 'sr35-scene.txt:79: note: ignoring 12 numbers from line 79 on' "$T/err"
+
+# --- Swapped operands.
+run compare "$SR/sr38.png" "$SR/sr38-scene.txt"
+check swapped-args [ "$rc" -eq 2 ] && grep -q 'SCENE comes first' "$T/err"
+
+# --- grade: a Moodle folder and a zip of it, two scenes, a points table.
+M=$T/moodle
+mkdir -p "$M/Ada Lovelace_1001_assignsubmission_file_" "$M/Alan Turing_1002_assignsubmission_file_"
+"$W" -q -s 40 -o "$M/Ada Lovelace_1001_assignsubmission_file_/scene.bmp" "$SCENE"
+"$W" -q -s 40 -o "$M/Ada Lovelace_1001_assignsubmission_file_/mirrors.png" "$ROOT/scenes/mirrors.txt"
+python3 "$REF" "$SCENE" "$M/Alan Turing_1002_assignsubmission_file_/scene.ppm" --size 40 --mistake no-shadows
+"$W" -q -s 40 -r 1 -o "$M/Alan Turing_1002_assignsubmission_file_/mirrors.png" "$ROOT/scenes/mirrors.txt"
+printf '# points\nmatch 5   # right\ncause no-shadows 3\ncause 1\n' >"$T/marks.txt"
+(cd "$T" && python3 -c 'import zipfile, os
+z = zipfile.ZipFile("class.zip", "w")
+for root, ds, fs in os.walk("moodle"):
+    for f in sorted(fs): z.write(os.path.join(root, f))
+z.close()')
+run grade -q -s 40 --no-camera-fit --scene "$SCENE" --scene "$ROOT/scenes/mirrors.txt" --marks "$T/marks.txt" \
+	--csv "$T/wd/rows.csv" -o "$T/wd/report.html" "$M" "$T/class.zip"
+check grade-exit [ "$rc" -eq 3 ]
+check grade-summary grep -q '^class: 8 images of 4 students: 4 match, 4 differ, 0 unreadable' "$T/out"
+check grade-csv python3 - "$T/wd/rows.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 8, len(rows)
+ada = [r for r in rows if r["student"] == "Ada Lovelace"]
+alan = [r for r in rows if r["student"] == "Alan Turing"]
+assert len(ada) == 4 and len(alan) == 4 and {r["id"] for r in ada} == {"1001"}, rows
+for r in ada:
+    assert r["verdict"] == "match" and r["points"] == "5", r
+    assert r["scene"].endswith(("scene.txt", "mirrors.txt")) and (r["scene"].endswith("mirrors.txt")) == ("mirrors" in r["file"]), r
+byscene = {r["scene"].split("/")[-1]: r for r in alan}
+assert byscene["scene.txt"]["cause"] == "no-shadows" and byscene["scene.txt"]["points"] == "3", byscene
+assert byscene["mirrors.txt"]["best"] == "no-reflections" and byscene["mirrors.txt"]["points"] == "1", byscene
+PY
+check grade-report-students grep -q '<table id="students">' "$T/wd/report.html"
+# A bad points table: its line and column, before anything is graded.
+printf 'match 5\ncuase 3\n' >"$T/bad-marks.txt"
+run grade -q -s 40 --scene "$SCENE" --marks "$T/bad-marks.txt" "$M"
+check marks-error [ "$rc" -eq 1 ] && grep -q 'bad-marks.txt:2:1: error: expected match, camera' "$T/err"
+check marks-error-first [ ! -s "$T/out" ]
+
+finish
