@@ -77,6 +77,9 @@
   }
 
   function showError(e) {
+    // No image and no command for a scene that does not read.
+    canvas.hidden = true;
+    $('command').value = '';
     $('error').hidden = false;
     $('error-message').textContent = e.message;
     const pre = $('error-file');
@@ -122,6 +125,7 @@
       canvas.style.width = (img.width < 384 ? 384 : img.width) + 'px';
       ctx.putImageData(new ImageData(img.rgba, img.width, img.height), 0, 0);
       state.image = img;
+      canvas.hidden = false;
       $('error').hidden = true;
       if (!preview) {
         const cmdOptions = Object.assign({}, o);
