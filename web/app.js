@@ -200,6 +200,7 @@
         const res = await whitted.compare(scene(), await readBytes(files[0]),
           Object.assign(o, { imageName: files[0].name.replace(/[^A-Za-z0-9._-]/g, '_'), diff: true }));
         showCompare(res, $('compare-report'), files[0].name);
+        showStudentImage(files[0]);
       } catch (e) {
         $('compare-report').replaceChildren(el('p', { id: 'compare-error' }, e.message));
       }
@@ -214,6 +215,30 @@
     } catch (e) {
       $('grade-report').replaceChildren(el('p', {}, e.message));
     }
+  }
+
+  // The student's image beside the report (what the browser can show:
+  // PNG and BMP): a click explains that pixel of the reference, with the
+  // student's own value beside it.
+  function showStudentImage(file) {
+    if (!/\.(png|bmp)$/i.test(file.name))
+      return;
+    const img = el('img', { id: 'student-image', alt: 'your image', src: URL.createObjectURL(file) });
+    img.style.cursor = 'crosshair';
+    img.addEventListener('click', async (e) => {
+      const r = img.getBoundingClientRect();
+      const x = Math.min(img.naturalWidth - 1, Math.floor((e.clientX - r.left) * img.naturalWidth / r.width));
+      const y = Math.min(img.naturalHeight - 1, Math.floor((e.clientY - r.top) * img.naturalHeight / r.height));
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      const v = g.getImageData(x, y, 1, 1).data;
+      await explainPixel(x, y);
+      $('explain').prepend(el('p', { id: 'student-value' }, 'your image has (' + v[0] + ', ' + v[1] + ', ' + v[2] + ') there'));
+    });
+    $('compare-report').append(el('p', {}, 'Your image (click a pixel to explain the reference\'s):'), img);
   }
 
   async function takeFiles(list) {
@@ -350,6 +375,10 @@
     const r = canvas.getBoundingClientRect();
     const x = Math.min(canvas.width - 1, Math.floor((e.clientX - r.left - canvas.clientLeft) * canvas.width / canvas.clientWidth));
     const y = Math.min(canvas.height - 1, Math.floor((e.clientY - r.top - canvas.clientTop) * canvas.height / canvas.clientHeight));
+    await explainPixel(x, y);
+  }
+
+  async function explainPixel(x, y) {
     const o = options(false);
     $('explain').replaceChildren(el('p', {}, 'explaining pixel ' + x + ',' + y + '...'));
     try {
