@@ -74,15 +74,16 @@ int scene_add_shape(struct scene *s, struct shape *sh, struct diag *d)
 		shape_destroy(sh);
 		return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
 	}
-	if (s->shape_lines) {
-		/* Grown with the shapes, their lines unknown until set. */
+	if (s->shape_lines && s->cap_lines < s->cap_shapes) {
+		/* Grown with the shapes (as often), their lines unknown until set. */
 		int *lines = rt_reallocarray(s->shape_lines, s->cap_shapes, sizeof(*lines));
 		if (!lines) {
 			shape_destroy(sh);
 			return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
 		}
-		lines[s->n_shapes] = 0;
+		memset(lines + s->cap_lines, 0, (s->cap_shapes - s->cap_lines) * sizeof(*lines));
 		s->shape_lines = lines;
+		s->cap_lines = s->cap_shapes;
 	}
 	s->shapes[s->n_shapes++] = sh;
 	return 0;
@@ -92,8 +93,11 @@ int scene_set_shape_line(struct scene *s, size_t i, int line, struct diag *d)
 {
 	if (i >= s->n_shapes)
 		return diag_fail(d, RT_E_INVALID, "no object %zu", i);
-	if (!s->shape_lines && !(s->shape_lines = rt_calloc(s->cap_shapes, sizeof(int))))
-		return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
+	if (!s->shape_lines) {
+		if (!(s->shape_lines = rt_calloc(s->cap_shapes, sizeof(int))))
+			return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
+		s->cap_lines = s->cap_shapes;
+	}
 	s->shape_lines[i] = line;
 	return 0;
 }

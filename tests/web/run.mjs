@@ -258,6 +258,19 @@ try {
     [fs.readFileSync(path.join(root, 'scenes/scene.txt'), 'utf8'), Array.from(fs.readFileSync(path.join(tmp, 'flat.bmp')))]);
   ok('compare-json', JSON.stringify(apiCompare) === JSON.stringify(cliCompare), 'the JSON differs from the CLI\'s');
 
+  // The student's image beside the report: a click explains the
+  // reference's pixel there and shows the student's value.
+  {
+    const sbox = await p.locator('#student-image').boundingBox();
+    await p.mouse.click(sbox.x + 10.5 * sbox.width / 96, sbox.y + 80.5 * sbox.height / 96);
+    await p.waitForSelector('#student-value', { timeout: 60000 });
+    const flatPx = cliImage(path.join(root, 'scenes/scene.txt'), ['-s', '96', '-r', '1']).rgb;
+    const sv = await p.textContent('#student-value');
+    const at = (80 * 96 + 10) * 3;
+    ok('student-pixel', sv.includes('(' + Array.from(flatPx.subarray(at, at + 3)).join(', ') + ')'), sv);
+    ok('student-pixel-explained', /^Pixel 10,80$/.test(await p.textContent('#explain h2')), await p.textContent('#explain h2'));
+  }
+
   // 7. A click on a pixel: the explanation, the CLI's to the byte.
   const box = await p.locator('#canvas').boundingBox();
   const px = 40, py = 70;
