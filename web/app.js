@@ -229,11 +229,14 @@
       const r = img.getBoundingClientRect();
       const x = Math.min(img.naturalWidth - 1, Math.floor((e.clientX - r.left) * img.naturalWidth / r.width));
       const y = Math.min(img.naturalHeight - 1, Math.floor((e.clientY - r.top) * img.naturalHeight / r.height));
+      // Decoded from the file's bytes (a page opened from disk may not read
+      // back an <img> drawn on a canvas).
+      const bitmap = await createImageBitmap(file);
       const c = document.createElement('canvas');
-      c.width = img.naturalWidth;
-      c.height = img.naturalHeight;
+      c.width = bitmap.width;
+      c.height = bitmap.height;
       const g = c.getContext('2d');
-      g.drawImage(img, 0, 0);
+      g.drawImage(bitmap, 0, 0);
       const v = g.getImageData(x, y, 1, 1).data;
       await explainPixel(x, y);
       $('explain').prepend(el('p', { id: 'student-value' }, 'your image has (' + v[0] + ', ' + v[1] + ', ' + v[2] + ') there'));
