@@ -97,7 +97,9 @@
   const workers = [];
   for (let i = 0; i < threads; i++)
     workers.push(new Worker1(url));
-  const ready = Promise.all(workers.map((w) => w.ready)).then(() => undefined);
+  const ready = Promise.all(workers.map((w) => w.ready)).then(() => {
+    performance.mark('whitted-ready');
+  });
   let generation = 0;
 
   function sceneFiles(sceneText, options) {

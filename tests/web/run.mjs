@@ -23,6 +23,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { createRequire } from 'node:module';
+import http from 'node:http';
 
 const [page, whittedBin, root, out, modules] = process.argv.slice(2);
 const require = createRequire(path.resolve(modules, 'x.js'));
@@ -318,7 +319,31 @@ try {
   const moved = cliImage(path.join(root, 'scenes/scene.txt'), cmdArgs);
   ok('camera-reproduced', sameAsRgba(moved, await canvasImage()) === '', sameAsRgba(moved, await canvasImage()));
 
-  // 10. The page's size.
+  // 10. The folder served by a static host (a local one on the loopback):
+  // the same first image.
+  {
+    const dir = path.dirname(page);
+    const server = http.createServer((req, res) => {
+      const name = path.join(dir, path.normalize(decodeURIComponent(req.url.split('?')[0])).replace(/^[/\\.]+/, '') || 'index.html');
+      fs.readFile(name, (err, data) => {
+        res.writeHead(err ? 404 : 200, { 'Content-Type': name.endsWith('.html') ? 'text/html' : 'application/octet-stream' });
+        res.end(err ? '' : data);
+      });
+    });
+    await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+    const hosted = await ctx.newPage();
+    await hosted.goto('http://127.0.0.1:' + server.address().port + '/index.html');
+    await hosted.waitForSelector('body[data-rendered="1"]', { timeout: 60000 });
+    const img = await hosted.evaluate(() => {
+      const c = document.getElementById('canvas');
+      return { width: c.width, height: c.height, rgba: Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data) };
+    });
+    ok('static-host', sameAsRgba(example, img) === '', sameAsRgba(example, img));
+    await hosted.close();
+    server.close();
+  }
+
+  // 11. The page's size.
   figures.page_bytes = fs.readdirSync(path.dirname(page)).reduce((s, f) => s + fs.statSync(path.join(path.dirname(page), f)).size, 0);
   ok('page-size', figures.page_bytes < 5 * 1024 * 1024, figures.page_bytes + ' bytes');
   ok('no-page-errors', pageErrors.length === 0, pageErrors.join('; '));
