@@ -64,16 +64,27 @@ CORE_PKGS := build-essential pkg-config libpng-dev zlib1g-dev libstb-dev
 # Offered to every build, not required: the faster PNG deflate (zlib is
 # the fallback where Debian has no ISA-L for the architecture).
 FAST_PKGS := libisal-dev libzip-dev
+# The cross builds' (make windows: MinGW-w64, and wine for its suite;
+# dpkg-dev unpacks Debian's zlib and libpng sources, scripts/third-party.sh).
+WIN_PKGS := mingw-w64 wine wine64 dpkg-dev
+# make web's (emscripten, whose optimiser needs node-acorn) and its
+# browser suite's (node and npm for playwright-core, and chromium).
+WEB_PKGS := emscripten node-acorn nodejs npm dpkg-dev
 CHECK_PKGS := $(CORE_PKGS) libzip-dev libcmocka-dev valgrind python3 povray povray-includes \
 	parallel openssh-client openssh-server rsync \
-	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation
+	freeglut3-dev xvfb xauth xdotool imagemagick man-db chromium fonts-liberation \
+	$(WIN_PKGS) $(WEB_PKGS)
 BENCH_PKGS := bc
 # Offered, not required: the benchmark's Embree column (make deps installs it).
 BENCH_OPT_PKGS := libembree-dev
 
 # ---- the library ----------------------------------------------------------
 LIB_MODULES := base syntax export shapes plugin accel scene render scenefile image dist grade
-LIB_SRC := $(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))
+# The platform layer (src/base/platform.h): one file a system; the
+# Windows cross build (make windows) takes the other.
+PLATFORM_SRC ?= src/base/platform_posix.c
+LIB_SRC := $(filter-out src/base/platform_%.c,$(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))) \
+	$(PLATFORM_SRC)
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
 SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
 
@@ -111,10 +122,10 @@ UNIT_DATA_DIR ?= $(abspath tests/data)
 # library's units, then the programs end to end, then hostile input), the
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
-	portablecheck imgcmptest povcheck refcheck mistakecheck comparetest reportcheck viewer-e2e \
+	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest explaintest reportcheck webtest viewer-e2e \
 	install-test newshape plugintest embreecheck
 
-.PHONY: all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
+.PHONY: web webtest windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
 	$(SUITES)
 all: $(BUILD)/libwhitted.a $(PROGRAMS:%=$(BUILD)/%) $(TOOLS:%=$(BUILD)/%)
 
@@ -244,6 +255,113 @@ $(BUILD)/san/fuzz_plugin_replay: tests/fuzz/replay.c tests/fuzz/plugin_harness.c
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -Itests/fuzz -DRT_FUZZ_TARGET=fuzz_plugin_one -o $@ \
 		tests/fuzz/replay.c tests/fuzz/plugin_harness.c $(BUILD)/san/libwhitted.a $(LDLIBS)
 
+# ---- the cross builds' libraries: zlib, libpng, stb_image -----------------
+# make windows and make web compile Debian's sources of zlib and libpng
+# (and libstb-dev's header) into their programs: MinGW-w64 has no libpng,
+# and emscripten's ports would be fetched from the network.
+# scripts/third-party.sh fetches and unpacks them once, under
+# build/third_party/.
+THIRD := $(BUILD)/third_party
+ZLIB_C := adler32 compress crc32 deflate infback inffast inflate \
+	inftrees trees uncompr zutil
+LIBPNG_C := png pngerror pngget pngmem pngpread pngread pngrio pngrtran pngrutil pngset \
+	pngtrans pngwio pngwrite pngwtran pngwutil
+THIRD_SRC := $(ZLIB_C:%=$(THIRD)/zlib/%.c) $(LIBPNG_C:%=$(THIRD)/libpng/%.c)
+THIRD_CFLAGS := -I$(THIRD)/zlib -I$(THIRD)/libpng -isystem $(THIRD)/include
+$(THIRD)/.stamp: scripts/third-party.sh
+	@scripts/third-party.sh $(THIRD)
+	@touch $@
+$(THIRD_SRC): $(THIRD)/.stamp
+	@test -f $@
+
+# ---- make windows: whitted.exe and scene2pov.exe --------------------------
+# Cross-built with Debian's MinGW-w64 (the POSIX thread model, for
+# pthreads), static: zlib, libpng and stb_image built in, the C runtime's
+# and winpthreads' libraries linked in, so each .exe runs alone.  The
+# platform layer is src/base/platform_windows.c: no plugins, no huge
+# pages (whitted.exe --version says so).  The AVX2 and AVX-512 files are
+# compiled without their instruction sets: GCC does not align the stack
+# of Windows' x64 calling convention to the 32 bytes their spills need
+# (GCC bug 54412), and every walk gives the same image.  make wintest
+# runs them under wine against the Linux build.
+WIN_CC ?= x86_64-w64-mingw32-gcc-posix
+WIN := $(BUILD)/windows
+# -Wno-format: MinGW's GCC checks format(printf) as Microsoft's printf,
+# which has no %zu, though the functions behind it are MinGW's C99 ones
+# (__USE_MINGW_ANSI_STDIO); the native builds check the formats.
+WIN_CFLAGS := $(WARN) -Wno-format $(FP) -O2 -Iinclude -Isrc $(THIRD_CFLAGS) \
+	-D__USE_MINGW_ANSI_STDIO=1 -MMD -MP
+WIN_LIB_SRC := $(filter-out src/base/platform_posix.c,$(LIB_SRC)) src/base/platform_windows.c
+WIN_LIBS := -static -lpsapi -lm -pthread
+$(WIN)/third/%.o: $(THIRD)/%.c
+	@mkdir -p $(@D)
+	$(WIN_CC) -std=c99 -O2 $(FP) $(THIRD_CFLAGS) -w -c $< -o $@
+$(WIN)/%.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(WIN_CC) $(WIN_CFLAGS) -c $< -o $@
+WIN_THIRD_OBJ := $(THIRD_SRC:$(THIRD)/%.c=$(WIN)/third/%.o)
+WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
+$(WIN)/pov_export/%.o: WIN_CFLAGS += -Ipov_export
+$(WIN)/whitted.exe: $(WHITTED_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
+	@echo "$(WIN_CC) -o $@ ... $(WIN_LIBS)"
+	@$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+$(WIN)/scene2pov.exe: $(POV_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
+	@echo "$(WIN_CC) -o $@ ... $(WIN_LIBS)"
+	@$(WIN_CC) -o $@ $^ $(WIN_LIBS)
+windows:
+	@scripts/deps.sh $(filter-out wine wine64,$(WIN_PKGS))
+	@$(MAKE) --no-print-directory $(WIN)/whitted.exe $(WIN)/scene2pov.exe
+	@echo "built $(WIN)/whitted.exe and $(WIN)/scene2pov.exe"
+wintest: all plugins windows
+	@tests/windows/run.sh $(WIN) $(BUILD)
+
+# ---- make web: the page (build/web/index.html) ----------------------------
+# The library, whitted's command line and web/web_api.c compiled by
+# Debian's emscripten into one WebAssembly module, its SSE2 paths into
+# WebAssembly SIMD (-msimd128 -msse2: the same operations, so the same
+# bytes), zlib and libpng from Debian's sources; then web/bundle.py puts
+# it, the page's script and style into one index.html (the module inlined
+# in base64: no server, no network; it opens from disk and from any
+# static host) and copies the screenshot-free folder's few files.  The
+# workers are made from that inlined text (a Blob), as a page opened from
+# disk may start no worker from a file.
+WEB := $(BUILD)/web
+WEB_OBJ_DIR := $(BUILD)/wasm
+EMCC ?= emcc
+WEB_CFLAGS := $(WARN) $(FP) -O3 -msimd128 -msse2 -Iinclude -Isrc $(THIRD_CFLAGS) -MMD -MP
+WEB_LDFLAGS := -O3 -msimd128 -sMODULARIZE=1 -sEXPORT_NAME=createWhittedModule \
+	-sENVIRONMENT=worker -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=33554432 \
+	-sTOTAL_STACK=16777216 -sEXIT_RUNTIME=0 -sINVOKE_RUN=0 -sFILESYSTEM=1 \
+	-sEXPORTED_FUNCTIONS=_web_argv_reset,_web_argv_push,_web_cli,_web_render_begin,_web_render_width,_web_render_height,_web_render_rows,_web_render_end,_malloc,_free \
+	-sEXPORTED_RUNTIME_METHODS=['FS','ccall','UTF8ToString'] --no-entry
+WEB_SRC := $(LIB_SRC) $(TOOLS_SRC) $(WHITTED_SRC) web/web_api.c
+$(WEB_OBJ_DIR)/third/%.o: $(THIRD)/%.c
+	@mkdir -p $(@D)
+	$(EMCC) -std=c99 -O3 $(FP) $(THIRD_CFLAGS) -w -c $< -o $@
+$(WEB_OBJ_DIR)/%.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(EMCC) $(WEB_CFLAGS) -c $< -o $@
+# Debian's emscripten runs its optimiser under node with Debian's acorn
+# (node-acorn, in /usr/share/nodejs), which a node from elsewhere does not
+# look for.
+$(WEB_OBJ_DIR)/whitted-wasm.js: export NODE_PATH := /usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
+# whitted's main is the page's whitted_main (web_api.c calls it).
+$(WEB_OBJ_DIR)/src/cli/main.o: WEB_CFLAGS += -Dmain=whitted_main -Wno-missing-prototypes
+$(WEB_OBJ_DIR)/whitted-wasm.js: $(WEB_SRC:%.c=$(WEB_OBJ_DIR)/%.o) \
+	$(THIRD_SRC:$(THIRD)/%.c=$(WEB_OBJ_DIR)/third/%.o)
+	@echo "$(EMCC) -o $@ ... $(WEB_LDFLAGS)"
+	@$(EMCC) -o $@ $^ $(WEB_LDFLAGS)
+$(WEB)/index.html: $(WEB_OBJ_DIR)/whitted-wasm.js web/bundle.py $(wildcard web/*.js web/*.html web/*.css)
+	@mkdir -p $(@D)
+	python3 web/bundle.py $(WEB_OBJ_DIR)/whitted-wasm.js web $(WEB)
+web:
+	@scripts/deps.sh $(filter-out npm,$(WEB_PKGS))
+	@$(MAKE) --no-print-directory $(WEB)/index.html
+	@echo "built $(WEB)/index.html ($$(du -sh $(WEB) | cut -f1)): open it in a browser"
+# The page in headless chromium against build/whitted (tests/web/run.mjs).
+webtest: all web
+	@tests/web/run.sh $(BUILD)
+
 # ---- make check -----------------------------------------------------------
 # check-deps installs first; the suites then run in a new make, so that what
 # it installed (povray, freeglut) is seen.  Each suite decides at run time
@@ -314,6 +432,8 @@ comparetest: all
 	@tests/cli/compare.sh $(BUILD)/whitted
 	@tests/cli/compare_order.sh $(BUILD)/whitted
 	@tests/cli/compare_real.sh $(BUILD)/whitted
+explaintest: all
+	@tests/cli/explain.sh
 reportcheck: all
 	@tests/cli/report.sh $(BUILD)/whitted
 viewer-e2e: all plugins
@@ -377,6 +497,11 @@ bench: all
 	@if [ -f /usr/include/embree3/rtcore.h ]; then \
 		$(MAKE) --no-print-directory $(BUILD)/whitted-embree $(BUILD)/embree_build; fi
 	@bench/bench.sh
+	@if command -v emcc >/dev/null 2>&1 && command -v chromium >/dev/null 2>&1; then \
+		$(MAKE) --no-print-directory web >/dev/null && tests/web/run.sh $(BUILD) --install-only && \
+		node bench/web-bench.mjs $(BUILD)/web/index.html $(BUILD)/whitted scenes/scene.txt \
+			$(BUILD)/node/node_modules; \
+	else echo "web row: not run (emscripten or chromium missing: make deps)"; fi
 
 # ---- installing -----------------------------------------------------------
 MAN_PAGES := $(wildcard docs/man/*.1)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/platform.h"
 #include "cli/scene_opts.h"
 #include "cli/tool.h"
 #include "export.h"
@@ -99,7 +100,8 @@ static int pov_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("scene2pov %s\n", RT_VERSION);
+		printf("scene2pov %s%s%s\n", RT_VERSION, rt_platform_note()[0] ? "\n" : "",
+		       rt_platform_note());
 		exit(0);
 	}
 	return -1;
@@ -247,7 +249,7 @@ static char *absolute_dir(const char *path)
 	}
 	if (!dir)
 		return NULL;
-	abs = realpath(dir, NULL);
+	abs = rt_real_path(dir);
 	free(dir);
 	if (abs && !pov_export_name_ok(abs)) {
 		free(abs);

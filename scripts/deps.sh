@@ -58,6 +58,14 @@ provided() {
 	freeglut3-dev) pc glut gl ;;
 	valgrind | python3 | povray | parallel | rsync | xdotool | xauth | bc) has "$1" ;;
 	chromium) has chromium || has chromium-browser ;;
+	mingw-w64) has x86_64-w64-mingw32-gcc-posix ;;
+	wine) has wine ;;
+	wine64) has wine64 || [ -x /usr/lib/wine/wine64 ] ;;
+	dpkg-dev) has dpkg-source ;;
+	emscripten) has emcc ;;
+	nodejs) has node ;;
+	npm) has npm ;;
+	node-acorn) [ -f /usr/share/nodejs/acorn/package.json ] ;;
 	openssh-client) has ssh ;;
 	openssh-server) has sshd || [ -x /usr/sbin/sshd ] ;;
 	xvfb) has Xvfb ;;

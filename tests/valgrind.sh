@@ -148,6 +148,11 @@ vg "grade a folder and a zip" 3 grade -q -s 72 -j 2 --no-camera-fit --scene "$RO
 	--csv r2.csv -o r2.html "$CI/class" "$CI/class.zip"
 vg "grade with a report" 3 grade -q -s 72 -j 2 --scene "$ROOT/scenes/scene.txt" -o r.html --csv r.csv \
 	"$CI/topdown.bmp" "$CI/other.png" "$CI/truncated.bmp"
+# explain: glass and samples as JSON, a located scene error, a pixel
+# outside the image.
+vg "explain glass samples" 0 explain -q -s 32 --glass 2 --samples 2 --json "$ROOT/scenes/sphere.txt" 10,12
+vg "explain bad scene" 1 explain -q "$DATA/course-files/thr0m3l.txt" 1,1
+vg "explain outside" 2 explain -q -s 8 "$ROOT/scenes/scene.txt" 9,1
 # Hostile inputs of the sturdiness pass: images (hostile_png.py) as a
 # texture and compared, a tree of glass rays over --max-rays, the glass
 # sphere at recursion 256, a FIFO as a texture.

@@ -122,6 +122,11 @@ int scene_image_size(const struct scene *s);	/* the image is size x size */
 size_t scene_shape_count(const struct scene *s);
 bool scene_has_floor(const struct scene *s);	/* scene_add_view_floor's or --floor's */
 const struct shape *scene_shape(const struct scene *s, size_t i);
+/* The line of the file where object i's keyword is (for whitted explain),
+ * recorded by the reader (scene_set_shape_line) where it reads the file
+ * in one thread (every file but the biggest); 0 when unknown. */
+int scene_shape_line(const struct scene *s, size_t i);
+int scene_set_shape_line(struct scene *s, size_t i, int line, struct diag *d);
 size_t scene_light_count(const struct scene *s);
 const struct light *scene_light(const struct scene *s, size_t i);
 /* hash_bytes of the scene text as read, so that region renders can tell

@@ -7,11 +7,8 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include "base/alloc.h"
+#include "base/platform.h"
 
 #ifdef RT_TEST_HOOKS
 /* Only the tests set these, from one thread, before any render starts.
@@ -61,14 +58,14 @@ void *rt_malloc(size_t size)
 {
 	if (alloc_should_fail())
 		return NULL;
-	return malloc(size ? size : 1);
+	return rt_sys_malloc(size ? size : 1);
 }
 
 void *rt_calloc(size_t count, size_t size)
 {
 	if (alloc_should_fail())
 		return NULL;
-	return calloc(count ? count : 1, size ? size : 1);
+	return rt_sys_calloc(count ? count : 1, size ? size : 1);
 }
 
 void *rt_reallocarray(void *p, size_t count, size_t size)
@@ -77,51 +74,34 @@ void *rt_reallocarray(void *p, size_t count, size_t size)
 		return NULL;
 	if (alloc_should_fail())
 		return NULL;
-	return realloc(p, count != 0 && size != 0 ? count * size : 1);
+	return rt_sys_realloc(p, count != 0 && size != 0 ? count * size : 1);
 }
 
 void *rt_aligned_array(size_t align, size_t count, size_t size)
 {
-	void *p = NULL;
-
 	if (size != 0 && count > SIZE_MAX / size)
 		return NULL;
 	if (alloc_should_fail())
 		return NULL;
-	if (posix_memalign(&p, align, count != 0 && size != 0 ? count * size : 1) != 0)
-		return NULL;
-	return p;
+	return rt_sys_aligned(align, count != 0 && size != 0 ? count * size : 1);
 }
 
 void *rt_aligned_shrink(void *p, size_t align, size_t count, size_t size)
 {
-	void *q;
-
-	/* A shrink is in place in practice (glibc keeps the start of the
-	 * block); should it move, the copy goes to a block aligned anew. */
 	if (alloc_should_fail())
 		return NULL;
-	q = realloc(p, count != 0 && size != 0 ? count * size : 1);
-	if (!q || (uintptr_t)q % align == 0)
-		return q;
-	p = q;
-	if (posix_memalign(&q, align, count != 0 && size != 0 ? count * size : 1) != 0)
-		return p;
-	memcpy(q, p, count * size);
-	free(p);
-	return q;
+	/* count * size is at most the block's size, which did not overflow. */
+	return rt_sys_aligned_realloc(p, align, count * size, count != 0 && size != 0 ? count * size : 1);
 }
 
 void rt_free(void *p)
 {
-	free(p);
+	rt_sys_free(p);
 }
 
 void rt_release_free_memory(void)
 {
-#if defined(__GLIBC__)
-	malloc_trim(0);
-#endif
+	rt_sys_trim();
 }
 
 char *rt_strdup(const char *s)

@@ -12,6 +12,7 @@
 
 #include "base/alloc.h"
 #include "base/file.h"
+#include "base/platform.h"
 
 static int file_too_large(const char *name, size_t limit, struct diag *d)
 {
@@ -109,7 +110,7 @@ static FILE *file_open(const char *path, bool regular, struct diag *d)
 				 errno ? strerror(errno) : "out of memory");
 		return f;
 	}
-	fd = open(path, O_RDONLY | O_NONBLOCK);
+	fd = open(path, O_RDONLY | O_NONBLOCK | RT_O_BINARY);
 	if (fd < 0) {
 		int err = errno;
 

@@ -9,13 +9,11 @@
  * whole, aligned 2 MiB extents: hence the alignment and the size rounded
  * up (address space only: the pages past what is written are never
  * touched but for the last huge page's rest). */
-#define _DEFAULT_SOURCE
 #include <stdint.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <unistd.h>
 
 #include "base/alloc.h"
+#include "base/platform.h"
 #include "base/thread.h"
 
 #define HUGE_PAGE ((size_t)2 << 20)
@@ -37,12 +35,8 @@ static void *huge_block(size_t align, size_t count, size_t size, size_t min)
 		return rt_aligned_array(align, count, size);
 	rounded = (n + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
 	p = rt_aligned_array(HUGE_PAGE, rounded, 1);
-#ifdef MADV_HUGEPAGE
-	/* A refusal (a kernel without them) leaves small pages: slower,
-	 * not wrong. */
 	if (p)
-		(void)madvise(p, rounded, MADV_HUGEPAGE);
-#endif
+		rt_advise_huge(p, rounded);
 	return p;
 }
 
@@ -83,8 +77,8 @@ static void zero_huge(unsigned char *p, size_t n)
 {
 	struct zero_part part[ZERO_THREADS];
 	size_t pages = (n + HUGE_PAGE - 1) / HUGE_PAGE, each, at = 0;
-	long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-	int k = cpus < 1 ? 1 : cpus > ZERO_THREADS ? ZERO_THREADS : (int)cpus, i;
+	int cpus = rt_cpu_count();
+	int k = cpus > ZERO_THREADS ? ZERO_THREADS : cpus, i;
 
 	if ((size_t)k > pages)
 		k = (int)pages;

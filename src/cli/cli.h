@@ -18,5 +18,7 @@ int merge_main(int argc, char **argv);
 /* `whitted compare ...` and `whitted grade ...` (argv[0] the subcommand). */
 int compare_main(int argc, char **argv);
 int grade_main(int argc, char **argv);
+/* `whitted explain ...` (argv[0] "explain"). */
+int explain_main(int argc, char **argv);
 
 #endif

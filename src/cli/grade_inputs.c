@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "base/alloc.h"
+#include "base/platform.h"
 #include "cli/grade_inputs.h"
 #include "whitted/image.h"
 
@@ -150,7 +151,7 @@ static int grade_operand(const char *path, int depth, struct grade_inputs *out, 
 {
 	struct stat st;
 
-	if ((depth > 0 ? lstat(path, &st) : stat(path, &st)) != 0) {
+	if ((depth > 0 ? rt_lstat(path, &st) : stat(path, &st)) != 0) {
 		if (depth > 0)
 			return 0;
 		/* Not there: a row that says so, as grade always did. */

@@ -12,6 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "base/platform.h"
 #include "cli/cli.h"
 #include "cli/suggest.h"
 #include "cli/tool.h"
@@ -26,20 +27,7 @@ static void on_signal(int sig)
 
 void cli_set_signals(void)
 {
-	struct sigaction sa, old_sa;
-
-	memset(&sa, 0, sizeof(sa));
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
-	/* A closed terminal stops the render cleanly too, unless the hang-up
-	 * is ignored (nohup). */
-	if (sigaction(SIGHUP, NULL, &old_sa) == 0 && old_sa.sa_handler != SIG_IGN)
-		sigaction(SIGHUP, &sa, NULL);
-	/* A file-size limit then fails the write with EFBIG instead of killing
-	 * us with a temporary file left behind. */
-	signal(SIGXFSZ, SIG_IGN);
+	rt_on_stop_signals(on_signal);
 }
 
 /* The commands that render (all but merge) say when WHITTED_ISA is not
@@ -64,6 +52,7 @@ static const struct subcommand {
 	{ "merge", "whitted merge", merge_main, false },
 	{ "compare", "whitted compare", compare_main, true },
 	{ "grade", "whitted grade", grade_main, true },
+	{ "explain", "whitted explain", explain_main, true },
 };
 #define N_SUBCOMMANDS (sizeof(subcommands) / sizeof(subcommands[0]))
 
@@ -90,7 +79,7 @@ static bool looks_like_command(const char *w)
  * go on and read it as the scene. */
 static int not_a_command(const char *w)
 {
-	static const char *const words[] = { "merge", "compare", "grade", "help" };
+	static const char *const words[] = { "merge", "compare", "grade", "explain", "help" };
 	const char *hit;
 
 	if (!looks_like_command(w))
@@ -133,7 +122,7 @@ int main(int argc, char **argv)
 				return run_subcommand(&subcommands[i], 2, args);
 			}
 		if (argc >= 3)
-			return tool_usage_error("help: no subcommand '%s' (merge, compare or grade)",
+			return tool_usage_error("help: no subcommand '%s' (merge, compare, grade or explain)",
 						argv[2]);
 		return run_subcommand(&subcommands[0], 2, args);
 	}

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/platform.h"
 #include "cli/render_args.h"
 #include "cli/tool.h"
 #include "whitted/frames.h"
@@ -59,6 +60,9 @@ static void usage(FILE *f)
 		"whitted compare [OPTIONS] SCENE IMAGE   checks a student's render against the\n"
 		"reference and names the likely mistake; whitted grade --scene SCENE IMAGE...\n"
 		"checks a class's, with an HTML report (see their --help).\n"
+		"\n"
+		"whitted explain [OPTIONS] SCENE X,Y     why pixel X,Y has its colour: its rays,\n"
+		"hits, lights, shadows and reflections down to the 8-bit value (--json too).\n"
 		"\n"
 		"Exit status: 0 success, 1 scene, input or I/O error, 2 bad command line,\n"
 		"128+N when stopped by signal N (the output is then left untouched).\n",
@@ -283,7 +287,8 @@ static int render_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("whitted %s\n", RT_VERSION);
+		printf("whitted %s%s%s\n", RT_VERSION, rt_platform_note()[0] ? "\n" : "",
+		       rt_platform_note());
 		exit(0);
 	}
 	return -1;

@@ -2,9 +2,9 @@
  * the --stats lines. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
-#include <sys/resource.h>
 #include <time.h>
 
+#include "base/platform.h"
 #include "cli/report.h"
 
 double report_now(void)
@@ -33,11 +33,9 @@ void report_progress(void *ctx, long done, long total)
 void report_stats(const struct scene *s, const struct settings *set, const struct ray_counts *rc,
 		  int threads, const struct report_times *t)
 {
-	struct rusage ru;
 	double total = (double)(rc->primary + rc->shadow + rc->reflection + rc->refraction);
 	char text[RT_SETTINGS_TEXT_MAX];
 
-	getrusage(RUSAGE_SELF, &ru);
 	settings_format(set, text, sizeof(text));
 	fprintf(stderr,
 		"scene:    %zu objects, %zu lights, %dx%d, recursion %d, %zu hierarchy nodes (%.1f MiB, %s walk, %s)\n"
@@ -53,6 +51,6 @@ void report_stats(const struct scene *s, const struct settings *set, const struc
 		t->parse, t->build, t->render, threads, t->write,
 		(unsigned long long)rc->primary, (unsigned long long)rc->shadow,
 		(unsigned long long)rc->reflection, (unsigned long long)rc->refraction, t->render > 0 ? total / t->render * 1e-6 : 0.0,
-		ru.ru_maxrss / 1024.0);
+		rt_peak_resident_bytes() / 1048576.0);
 }
 

@@ -1,15 +1,20 @@
 /* Option values and scene options shared by the command-line tools. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "base/platform.h"
 #include "cli/plugin_opts.h"
 #include "cli/scene_opts.h"
 #include "cli/tool.h"
+
+/* 2^40, or LONG_MAX where long has 32 bits (Windows). */
+#define CLI_GLASS_INDEX_MAX ((long)(LONG_MAX > (1LL << 40) ? (1LL << 40) : LONG_MAX))
 
 const char cli_scene_help[] =
 	"  -s, --size N           image size in pixels (N x N), overriding the file's\n"
@@ -128,7 +133,7 @@ static int cli_parse_glass_item(struct cli_scene *o, char *item, struct diag *d)
 	}
 	g->ior = CLI_GLASS_IOR;
 	g->kt = CLI_GLASS_KT;
-	if ((rc = number_parse_long("--glass INDEX", item, 1, 1L << 40, &g->index, d)) < 0 ||
+	if ((rc = number_parse_long("--glass INDEX", item, 1, CLI_GLASS_INDEX_MAX, &g->index, d)) < 0 ||
 	    (ior && (rc = number_parse_double("--glass IOR", ior, &g->ior, d)) < 0) ||
 	    (kt && (rc = number_parse_double("--glass KT", kt, &g->kt, d)) < 0))
 		return rc;
@@ -411,9 +416,9 @@ char *cli_default_output(const char *scene_path, const char *suffix)
 
 int cli_default_threads(void)
 {
-	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	int n = rt_cpu_count();
 
-	return n < 1 ? 1 : n > 64 ? 64 : (int)n;
+	return n > 64 ? 64 : n;
 }
 
 static void cli_note_other_option(struct cli_scene *scene, int c, const char *name)

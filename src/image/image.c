@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "base/alloc.h"
+#include "base/platform.h"
 #include "whitted/image.h"
 
 int image_alloc(struct image *img, int width, int height, struct diag *d)
@@ -151,7 +152,7 @@ static int image_fill_fd(int fd, mode_t mode, const char *path, image_fill_fn *f
 	rc = fill(ctx, f, d);
 	if (rc == 0 && fflush(f) != 0)
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
-	if (rc == 0 && fchmod(fd, mode) != 0)
+	if (rc == 0 && rt_file_set_mode(fd, (unsigned)mode) != 0)
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot set permissions: %s", strerror(errno));
 	if (fclose(f) != 0 && rc == 0)
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
@@ -194,7 +195,7 @@ int image_write_file(const char *path, image_fill_fn *fill, void *ctx,
 		rc = diag_fail(d, RT_E_INTERRUPTED, "interrupted");
 	if (rc < 0)
 		goto out_unlink;
-	if (rename(tmp, path) != 0) {
+	if (rt_rename_over(tmp, path) != 0) {
 		rc = diag_set(d, RT_E_IO, path, 0, 0, "cannot write: %s", strerror(errno));
 		goto out_unlink;
 	}

@@ -30,6 +30,7 @@
 #endif
 
 #include "base/alloc.h"
+#include "base/platform.h"
 #include "base/thread.h"
 #include "image/png_deflate.h"
 #include "image/png_idat.h"
@@ -247,8 +248,8 @@ static void *png_idat_worker_main(void *arg)
 
 static int png_idat_thread_count(int n_strips)
 {
-	long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-	int n = cpus < 1 ? 1 : cpus > PNG_IDAT_MAX_THREADS ? PNG_IDAT_MAX_THREADS : (int)cpus;
+	int cpus = rt_cpu_count();
+	int n = cpus > PNG_IDAT_MAX_THREADS ? PNG_IDAT_MAX_THREADS : cpus;
 
 	return n < n_strips ? n : n_strips;
 }

@@ -7,7 +7,6 @@
  * host_register_plugin fills in. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
-#include <dlfcn.h>
 #include <errno.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -18,6 +17,7 @@
 #include "base/alloc.h"
 #include "base/file.h"
 #include "base/hash.h"
+#include "base/platform.h"
 #include "plugin/loader.h"
 #include "shapes/registry.h"
 #include "shapes/solve.h"
@@ -197,6 +197,7 @@ static int plugin_open(const char *path, struct plugin *pl, struct diag *d)
 {
 	int (*init)(const struct whitted_plugin_host *);
 	const unsigned *abi;
+	char why[256];
 	char *where;
 	int rc;
 
@@ -205,17 +206,13 @@ static int plugin_open(const char *path, struct plugin *pl, struct diag *d)
 	if (!where)
 		return diag_fail(d, RT_E_NOMEM, "out of memory");
 	sprintf(where, "%s%s", strchr(path, '/') ? "" : "./", path);
-	pl->handle = dlopen(where, RTLD_NOW | RTLD_LOCAL);
+	pl->handle = rt_dl_open(where, why, sizeof(why));
 	free(where);
-	if (!pl->handle) {
-		const char *why = dlerror();
-
-		return diag_fail(d, RT_E_SYNTAX, "plugin %s: not a plugin: %s", path,
-				 why ? why : "dlopen failed");
-	}
-	abi = dlsym(pl->handle, "whitted_plugin_abi");
+	if (!pl->handle)
+		return diag_fail(d, RT_E_SYNTAX, "plugin %s: not a plugin: %s", path, why);
+	abi = rt_dl_sym(pl->handle, "whitted_plugin_abi");
 	/* POSIX's way of reading a function pointer from dlsym. */
-	*(void **)(&init) = dlsym(pl->handle, "whitted_plugin_init");
+	*(void **)(&init) = rt_dl_sym(pl->handle, "whitted_plugin_init");
 	if (!abi || !init)
 		rc = diag_fail(d, RT_E_SYNTAX,
 			       "plugin %s: not a whitted plugin (it defines no %s; see whitted/plugin.h)",
@@ -281,7 +278,7 @@ static int plugin_load_locked(const char *path, size_t yield_to, struct diag *d)
 		if (loading.registered)
 			shape_registry_remove(path);
 		if (pl.handle)
-			dlclose(pl.handle);
+			rt_dl_close(pl.handle);
 		plugin_free(&pl);
 		return rc;
 	}
@@ -321,17 +318,64 @@ static int plugin_load_yielding(const char *path, size_t yield_to, diag_note_fn 
 	return rc;
 }
 
-static int plugin_is_so(const struct dirent *e)
+static bool plugin_is_so(const char *name)
 {
-	size_t n = strlen(e->d_name);
+	size_t n = strlen(name);
 
-	return n > 3 && e->d_name[0] != '.' && strcmp(e->d_name + n - 3, ".so") == 0;
+	return n > 3 && name[0] != '.' && strcmp(name + n - 3, ".so") == 0;
+}
+
+static int plugin_name_cmp(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The .so files of dir in name order (malloc'ed names, the array too):
+ * their count, or -1 with errno. */
+static int plugin_list_dir(const char *path, char ***out)
+{
+	DIR *dir = opendir(path);
+	struct dirent *e;
+	char **names = NULL, **v;
+	int n = 0, cap = 0, err = 0;
+
+	if (!dir)
+		return -1;
+	while ((e = readdir(dir)) != NULL) {
+		if (!plugin_is_so(e->d_name))
+			continue;
+		if (n == cap) {
+			cap = cap ? 2 * cap : 16;
+			if (!(v = realloc(names, (size_t)cap * sizeof(*v)))) {
+				err = ENOMEM;
+				break;
+			}
+			names = v;
+		}
+		if (!(names[n] = malloc(strlen(e->d_name) + 1))) {
+			err = ENOMEM;
+			break;
+		}
+		strcpy(names[n++], e->d_name);
+	}
+	closedir(dir);
+	if (err) {
+		while (n > 0)
+			free(names[--n]);
+		free(names);
+		errno = err;
+		return -1;
+	}
+	if (n > 1)
+		qsort(names, (size_t)n, sizeof(*names), plugin_name_cmp);
+	*out = names;
+	return n;
 }
 
 static int plugin_load_dir(const char *dir, size_t len, size_t yield_to, diag_note_fn *note,
 			   void *note_ctx, struct diag *d)
 {
-	struct dirent **names;
+	char **names = NULL;
 	char *path;
 	int n, i, rc = 0;
 
@@ -339,7 +383,7 @@ static int plugin_load_dir(const char *dir, size_t len, size_t yield_to, diag_no
 		return diag_fail(d, RT_E_NOMEM, "out of memory");
 	memcpy(path, dir, len);
 	path[len] = '\0';
-	n = scandir(path, &names, plugin_is_so, alphasort);
+	n = plugin_list_dir(path, &names);
 	if (n < 0) {
 		if (errno != ENOENT)
 			rc = diag_fail(d, RT_E_IO, "WHITTED_PLUGIN_PATH: %s: %s", path, strerror(errno));
@@ -347,12 +391,12 @@ static int plugin_load_dir(const char *dir, size_t len, size_t yield_to, diag_no
 		return rc;
 	}
 	for (i = 0; i < n; i++) {
-		char *file = malloc(len + strlen(names[i]->d_name) + 2);
+		char *file = malloc(len + strlen(names[i]) + 2);
 
 		if (rc == 0 && !file)
 			rc = diag_fail(d, RT_E_NOMEM, "out of memory");
 		if (rc == 0) {
-			sprintf(file, "%s/%s", path, names[i]->d_name);
+			sprintf(file, "%s/%s", path, names[i]);
 			rc = plugin_load_yielding(file, yield_to, note, note_ctx, d);
 		}
 		free(file);
@@ -442,7 +486,7 @@ void plugin_unload_all(void)
 		struct plugin *pl = &plugins[--n_plugins];
 
 		shape_registry_remove(pl->path);
-		dlclose(pl->handle);
+		rt_dl_close(pl->handle);
 		plugin_free(pl);
 	}
 	pthread_mutex_unlock(&load_lock);

@@ -38,6 +38,7 @@ void scene_destroy(struct scene *s)
 	for (i = 0; i < s->n_shapes; i++)
 		shape_destroy(s->shapes[i]);
 	rt_free(s->shapes);
+	rt_free(s->shape_lines);
 	rt_free(s->lights);
 	rt_free(s->name);
 	rt_free(s);
@@ -73,8 +74,37 @@ int scene_add_shape(struct scene *s, struct shape *sh, struct diag *d)
 		shape_destroy(sh);
 		return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
 	}
+	if (s->shape_lines && s->cap_lines < s->cap_shapes) {
+		/* Grown with the shapes (as often), their lines unknown until set. */
+		int *lines = rt_reallocarray(s->shape_lines, s->cap_shapes, sizeof(*lines));
+		if (!lines) {
+			shape_destroy(sh);
+			return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
+		}
+		memset(lines + s->cap_lines, 0, (s->cap_shapes - s->cap_lines) * sizeof(*lines));
+		s->shape_lines = lines;
+		s->cap_lines = s->cap_shapes;
+	}
 	s->shapes[s->n_shapes++] = sh;
 	return 0;
+}
+
+int scene_set_shape_line(struct scene *s, size_t i, int line, struct diag *d)
+{
+	if (i >= s->n_shapes)
+		return diag_fail(d, RT_E_INVALID, "no object %zu", i);
+	if (!s->shape_lines) {
+		if (!(s->shape_lines = rt_calloc(s->cap_shapes, sizeof(int))))
+			return diag_set(d, RT_E_NOMEM, s->name, 0, 0, "out of memory");
+		s->cap_lines = s->cap_shapes;
+	}
+	s->shape_lines[i] = line;
+	return 0;
+}
+
+int scene_shape_line(const struct scene *s, size_t i)
+{
+	return s->shape_lines && i < s->n_shapes ? s->shape_lines[i] : 0;
 }
 
 static int scene_push_light(struct scene *s, const struct light *l, struct diag *d)

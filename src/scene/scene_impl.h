@@ -14,6 +14,8 @@ struct scene {
 	int image_size;
 	struct shape **shapes;
 	size_t n_shapes, cap_shapes;
+	int *shape_lines;		/* cap_lines of them, once one is set; else NULL */
+	size_t cap_lines;
 	struct light *lights;
 	size_t n_lights, cap_lights;
 	/* Lights with a falloff or a cone: while 0 the renderer takes the

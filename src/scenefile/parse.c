@@ -152,7 +152,9 @@ static int parse_object(struct parser *p, struct scene *s, long index, long coun
 	if (rc < 0)
 		return rc;
 	parser_note_degenerate(p, sh, line, index);
-	return scene_add_shape(s, sh, p->d);
+	if ((rc = scene_add_shape(s, sh, p->d)) < 0)
+		return rc;
+	return scene_set_shape_line(s, scene_shape_count(s) - 1, line, p->d);
 }
 
 long parse_count_numbers(const struct parser *p, long limit)

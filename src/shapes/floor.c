@@ -16,6 +16,7 @@
 
 #include "base/alloc.h"
 #include "base/hash.h"
+#include "base/platform.h"
 #include "whitted/diag.h"
 #include "whitted/image.h"
 #include "whitted/mesh.h"
@@ -548,7 +549,7 @@ int floor_set_textures(struct shape *s, const char *white, const char *black, st
 		if ((rc = image_read(paths[k], &fl->tex[k], &fl->tex_format[k], d)) < 0)
 			return rc;
 		/* POV-Ray reads the file again, maybe from another directory. */
-		abs = realpath(paths[k], NULL);
+		abs = rt_real_path(paths[k]);
 		if (!abs)
 			return diag_set(d, RT_E_IO, paths[k], 0, 0, "cannot resolve: %s",
 					strerror(errno));

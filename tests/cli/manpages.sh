@@ -192,7 +192,7 @@ if check_page whitted; then
 	check_exits whitted "$MAN/whitted.1" "$B/whitted"
 	check_exits "whitted merge" "$MAN/whitted.1" "$B/whitted" merge
 fi
-for sub in compare grade; do
+for sub in compare grade explain; do
 	if check_page "whitted-$sub"; then
 		check_options "whitted $sub" "$MAN/whitted-$sub.1" "" "$B/whitted" "$sub"
 		check_exits "whitted $sub" "$MAN/whitted-$sub.1" "$B/whitted" "$sub"
@@ -215,6 +215,6 @@ fi
 # No page for something that is not one of the programs.
 for page in "$MAN"/*.1; do
 	p=$(basename "$page" .1)
-	case $p in whitted | whitted-compare | whitted-grade | scene2pov | whitted-view) ok ;; *) bad "$p.1" "a page for no program: $p" ;; esac
+	case $p in whitted | whitted-compare | whitted-grade | whitted-explain | scene2pov | whitted-view) ok ;; *) bad "$p.1" "a page for no program: $p" ;; esac
 done
 finish
