@@ -176,12 +176,15 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	/* Nearer in colour, or in grey (the fit's own figures: an image
 	 * with a colour mistake on top, red and blue swapped, fits its
-	 * camera as well). */
+	 * camera as well) and not farther in colour: an image of another
+	 * scene can find a camera whose greys are nearer while its colours
+	 * are farther than the given camera's. */
 	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
 		     ((res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
 		       res->fig_found.psnr >= CHECK_MOVED_PSNR) ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
-		       fit.score <= CHECK_MOVED_GREY_MSE));
+		       fit.score <= CHECK_MOVED_GREY_MSE &&
+		       res->fig_found.psnr > res->fig.psnr));
 	if (!res->moved)
 		check_view_free(&res->found);
 	return 0;

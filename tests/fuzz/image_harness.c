@@ -34,7 +34,7 @@ int fuzz_image_one(const uint8_t *data, size_t size)
 		image_free(&img);
 		return 0;
 	}
-	if (grade_transform(&img, RT_CAUSE_MIRRORED, &t, &d) == 0) {
+	if (grade_transform_map(&img, GRADE_MAP_MIRROR, &t, &d) == 0) {
 		grade_figures_of(&img, &t, 1, 0, 0, &f);
 		if (grade_diff_image(&img, &t, &diff, &d) == 0)
 			image_free(&diff);
