@@ -154,7 +154,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 {
 	struct camera_params starts[2];
 	struct grade_fit fit;
-	struct grade_figures rounded;
+	struct grade_figures rounded, given;
 	bool truncated;
 	int n = 1, rc;
 
@@ -174,17 +174,20 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
+	/* Both cameras' figures of the image as it is (res->fig may have
+	 * judged a textured floor as the reference's). */
+	grade_figures_skipping(&v->image, &res->image, v->ties, &given);
 	/* Nearer in colour, or in grey (the fit's own figures: an image
 	 * with a colour mistake on top, red and blue swapped, fits its
 	 * camera as well) and not farther in colour: an image of another
 	 * scene can find a camera whose greys are nearer while its colours
 	 * are farther than the given camera's. */
 	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
-		     ((res->fig_found.psnr >= res->fig.psnr + CHECK_MOVED_GAIN &&
+		     ((res->fig_found.psnr >= given.psnr + CHECK_MOVED_GAIN &&
 		       res->fig_found.psnr >= CHECK_MOVED_PSNR) ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
 		       fit.score <= CHECK_MOVED_GREY_MSE &&
-		       res->fig_found.psnr > res->fig.psnr));
+		       res->fig_found.psnr > given.psnr));
 	if (!res->moved)
 		check_view_free(&res->found);
 	return 0;

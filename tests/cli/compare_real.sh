@@ -140,6 +140,14 @@ SR=$DATA/student-renders
 run compare -q --json --no-camera-fit -s 768 --eye 0,-160,60 --look 0,0,60 --up 0,0,1 \
 	"$SR/sr02-scene.txt" "$SR/sr02.png"
 json textured 'assert j["floor_textured"] is True and "textured" in j["diagnosis"], j["diagnosis"]'
+# ... and its camera, moved before the capture, found though the floor
+# that fills most of the image is not the reference's: the camera's
+# figures weigh the image as it is at both cameras.
+run compare -q --json -s 768 --eye 0,-160,60 --look 0,0,60 --up 0,0,1 \
+	"$SR/sr02-scene.txt" "$SR/sr02.png"
+json textured-moved 'c = j["camera"]
+assert c["moved"] is True and c["psnr"] >= c["psnr_given"] + 3, c
+assert j["floor_textured"] is True, j["diagnosis"]'
 
 # --- A count-driven scene file: refused by the strict reading at its
 # location, compared with --lenient (the rest ignored with a note).
