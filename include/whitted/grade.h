@@ -85,6 +85,10 @@ struct grade_cause_text {
  * is the other one). */
 const struct grade_cause_text *grade_cause_text(enum grade_cause c, enum clamp_mode clamp);
 
+/* True for the causes that transform the reference's pixels (a mirror,
+ * a flip, a transposition, red and blue swapped) rather than render it. */
+bool grade_cause_is_transform(enum grade_cause c);
+
 /* What a reference is rendered with. */
 struct grade_job {
 	const struct scene *scene;
@@ -168,6 +172,15 @@ struct grade_fit {
  * of threads. */
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d);
+
+/* The camera refined from start on the fit's finer levels with form
+ * `form` of cause c rendered in place of the reference: a camera and a
+ * shading mistake at once (the mistake pulls a fit of the plain
+ * reference away).  -RT_E_INVALID for a transform or a form the cause
+ * does not have.  Deterministic as grade_fit_camera. */
+int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,
+			  enum grade_cause cause, int form, const struct image *sub,
+			  struct grade_fit *out, struct diag *d);
 
 /* The nearest hit of a ray in the job's scene, at *t (t in (0, *t)). */
 bool grade_primary_hit(const struct grade_job *job, const struct ray *r, double *t);

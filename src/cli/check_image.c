@@ -136,6 +136,17 @@ static double check_displacement(const struct check_view *a, const struct check_
 	return moves[(int)(CHECK_MOVED_QUANTILE * (n - 1))];
 }
 
+/* The view at a camera found, the ties allowing for the fit's own
+ * uncertainty. */
+static int check_found_view(const struct check_reference *ref, const struct check_view *v,
+			    const struct camera_params *p, struct check_view *out, struct diag *d)
+{
+	double angle = CHECK_FIT_PIXELS * 2.0 * tan(p->fov_deg * 3.14159265358979323846 / 360.0) /
+		       v->camera.height;
+
+	return check_view_make(ref, p, v->camera.width, v->camera.height, angle, out, d);
+}
+
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
@@ -145,7 +156,6 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 	struct grade_fit fit;
 	struct grade_figures rounded, given;
 	bool truncated;
-	double angle;
 	int n = 1, rc;
 
 	starts[0] = v->params;
@@ -160,10 +170,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	res->fitted = true;
 	res->fit_evals = fit.evals;
-	angle = CHECK_FIT_PIXELS * 2.0 * tan(fit.camera.fov_deg * 3.14159265358979323846 / 360.0) /
-		v->camera.height;
-	if ((rc = check_view_make(ref, &fit.camera, v->camera.width, v->camera.height, angle,
-				  &res->found, d)) < 0)
+	if ((rc = check_found_view(ref, v, &fit.camera, &res->found, d)) < 0)
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
@@ -306,6 +313,90 @@ static int check_at(struct check_view *v, struct check_result *res, struct grade
 static int check_image_read(struct check_reference *ref, struct check_result *res,
 			    struct diag *d);
 
+/* A camera and a mistake at once.  A shading mistake pulls the fit of
+ * the plain reference off the true camera (missing shadows, a white
+ * highlight), and the floor's tiles swapped look like a camera a cell
+ * away: so the camera found is refitted with each of the first causes
+ * ranked there, and with the tiles swapped, rendered in place of the
+ * reference.  A cause whose image at its own camera comes nearer than
+ * the best explanation so far by CHECK_REFIT_GAIN moves the camera found
+ * there, where the submission is judged again. */
+#define CHECK_REFIT_CAUSES 3
+#define CHECK_REFIT_GAIN 1.0
+
+static int check_refit(struct check_reference *ref, const struct check_view *given,
+		       struct check_result *res, struct diag *d)
+{
+	enum grade_cause causes[CHECK_REFIT_CAUSES + 1];
+	int forms[CHECK_REFIT_CAUSES + 1], n = 0, k, i, rc;
+	double best = res->n_ranks > 0 ? res->ranks[0].fig.psnr : res->fig_found.psnr;
+	struct camera_params best_camera;
+	bool better = false;
+	struct check_view view;
+
+	for (k = 0; k < (int)res->n_ranks && n < CHECK_REFIT_CAUSES; k++) {
+		const struct grade_rank *r = &res->ranks[k];
+		if (r->also != RT_CAUSE_NONE || grade_cause_is_transform(r->cause))
+			continue;
+		for (i = 0; i < n && causes[i] != r->cause; i++)
+			;
+		if (i == n) {
+			causes[n] = r->cause;
+			forms[n++] = r->form;
+		}
+	}
+	for (i = 0; i < n && causes[i] != RT_CAUSE_FLOOR_SWAPPED; i++)
+		;
+	if (i == n && scene_has_floor(ref->scene)) {
+		causes[n] = RT_CAUSE_FLOOR_SWAPPED;
+		forms[n++] = 0;
+	}
+	for (k = 0; k < n; k++) {
+		struct grade_fit fit;
+		struct grade_job job = res->found.job;
+		struct grade_rank r;
+		struct grade_figures f;
+		struct camera cam;
+		struct image img;
+
+		if ((rc = grade_fit_camera_with(&res->found.job, &res->found.params, causes[k], forms[k],
+						&res->image, &fit, d)) == -RT_E_INVALID) {
+			diag_clear(d);
+			continue;
+		}
+		if (rc < 0)
+			return rc;
+		res->fit_evals += fit.evals;
+		if ((rc = camera_init_rect(&cam, &fit.camera, given->camera.width, given->camera.height, d)) < 0)
+			return rc;
+		job.camera = &cam;
+		memset(&r, 0, sizeof(r));
+		r.cause = causes[k];
+		r.form = forms[k];
+		r.also = RT_CAUSE_NONE;
+		if ((rc = grade_cause_image(&job, &res->found.image, &r, &img, d)) < 0)
+			return rc;
+		grade_figures_of(&img, &res->image, 1, 0, 0, &f);
+		image_free(&img);
+		if (getenv("CHECK_TRACE"))
+			fprintf(stderr, "refit: %s: %.2f dB (best so far %.2f)\n",
+				grade_cause_text(causes[k], job.settings.clamp)->id, f.psnr, best);
+		if (f.psnr >= best + CHECK_REFIT_GAIN) {
+			best = f.psnr;
+			best_camera = fit.camera;
+			better = true;
+		}
+	}
+	if (!better)
+		return 0;
+	if ((rc = check_found_view(ref, given, &best_camera, &view, d)) < 0)
+		return rc;
+	check_view_free(&res->found);
+	res->found = view;
+	res->n_ranks = 0;
+	return check_at(&res->found, res, &res->fig_found, true, d);
+}
+
 int check_image(struct check_reference *ref, const char *path, struct check_result *res,
 		struct diag *d)
 {
@@ -390,6 +481,9 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 	if (res->moved) {
 		res->n_ranks = 0;
 		if ((rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0)
+			return rc;
+		if (!res->fig_found.match && res->explained != CHECK_EXPLAINED &&
+		    (rc = check_refit(ref, v, res, d)) < 0)
 			return rc;
 		if (res->fig_found.match) {
 			res->verdict = CHECK_MATCH;

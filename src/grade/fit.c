@@ -612,8 +612,9 @@ static int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][
 
 static bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals)
 {
+	static const int odd[4][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } };
 	const struct scene_view *v = scene_view_of(b->job->scene);
-	double xs[25 * FIT_DIM], fs[25], c = v->floor_cell;
+	double xs[28 * FIT_DIM], fs[28], c = v->floor_cell;
 	int i, j, n = 0, k, best = -1;
 
 	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
@@ -627,6 +628,14 @@ static bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *ev
 			xs[n * FIT_DIM + FIT_Y] += c * (i - j);
 			n++;
 		}
+	/* A cause's floor (the tiles swapped) may fit a cell off the plain
+	 * one's: the eye one cell along x or y, which swaps the tiles. */
+	for (k = 0; b->level->variant && k < 4; k++) {
+		memcpy(xs + n * FIT_DIM, x, sizeof(double) * FIT_DIM);
+		xs[n * FIT_DIM + FIT_X] += c * odd[k][0];
+		xs[n * FIT_DIM + FIT_Y] += c * odd[k][1];
+		n++;
+	}
 	fit_batch_run(b, xs, fs, n);
 	*evals += n;
 	for (k = 0; k < n; k++)
@@ -713,8 +722,12 @@ static int fit_stage_level(const struct fit_stage *st, const struct image *sub, 
 	return fit_level_grid(level, sub, w, h, st->ss, st->sigma, d);
 }
 
-int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
-		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
+/* The fit from stage `first` on: from the starts' coarse search (first
+ * 0), or refined from starts[0] alone; the variant's colours (NULL: the
+ * reference's) fitted. */
+static int fit_run(const struct grade_job *job, const struct camera_params *starts, int n_starts,
+		   const struct image *sub, const struct grade_variant *variant, int first,
+		   struct grade_fit *out, struct diag *d)
 {
 	const int n_stages = (int)(sizeof(fit_stages) / sizeof(fit_stages[0]));
 	const int wide = sub->width > sub->height ? sub->width : sub->height;
@@ -727,7 +740,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	for (k = 0; k < FIT_HYPOTHESES; k++)
 		pivot[k] = 100.0;
 	fit_view_of(&starts[0], hyp[0]);
-	for (s = 0; s < n_stages && s < (int)fit_env("FIT_STAGES", 99); s++) {
+	for (s = first; s < n_stages && s < (int)fit_env("FIT_STAGES", 99); s++) {
 		const struct fit_stage *st = &fit_stages[s];
 		struct fit_level level;
 		struct fit_batch batch;
@@ -737,12 +750,13 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		/* A small image's levels stop at its pixels: then only their
 		 * blur goes on shrinking. */
 		eff = st->cells < wide ? st->cells : wide;
-		if (s > 0 && eff == prev_cells && !(st->sigma < prev_sigma))
+		if (s > first && eff == prev_cells && !(st->sigma < prev_sigma))
 			continue;
 		prev_cells = eff;
 		prev_sigma = st->sigma;
 		if ((rc = fit_stage_level(st, sub, hyp[0][FIT_FOV], &level, &pixel_deg, d)) < 0)
 			return rc;
+		level.variant = variant;
 
 		if ((rc = fit_batch_open(&batch, &level, job, &starts[0], d)) < 0) {
 			fit_level_free(&level);
@@ -848,4 +862,44 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	}
 	fit_params_of(hyp[0], &starts[0], &out->camera);
 	return 0;
+}
+
+/* A second pass (and the refit with a cause) starts on this level:
+ * blurred enough to leave the floor's alias a first pass settled on for
+ * the true camera a few cells away, sharp enough to stay near. */
+#define FIT_REFIT_FIRST_STAGE 2
+
+int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
+		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
+{
+	struct grade_fit again;
+	int rc = fit_run(job, starts, n_starts, sub, NULL, 0, out, d);
+
+	/* The first pass ends on the floor's alias nearest its coarse
+	 * guess; a second from where it ended, with one hypothesis, often
+	 * finds the camera that alias hid (the same last level: the scores
+	 * compare). */
+	if (rc < 0 || (int)fit_env("FIT_PASSES", 2) < 2)
+		return rc;
+	if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
+		return rc;
+	if (again.score < out->score) {
+		again.evals += out->evals;
+		again.start_score = out->start_score;
+		*out = again;
+	} else {
+		out->evals += again.evals;
+	}
+	return 0;
+}
+
+int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,
+			  enum grade_cause cause, int form, const struct image *sub,
+			  struct grade_fit *out, struct diag *d)
+{
+	struct grade_variant v;
+
+	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v))
+		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
+	return fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
 }

@@ -5,6 +5,7 @@
 
 #include <stdint.h>
 
+#include "grade/grade_impl.h"
 #include "whitted/grade.h"
 
 /* A camera as the fit moves it: the eye (x, y, z), the direction of view
@@ -50,6 +51,9 @@ struct fit_level {
 	float *weight;			/* a cell's weight (NULL: 1) */
 	double sigma;
 	int recursion;			/* the rays' recursion level */
+	/* NULL: the reference's colours; else a cause's form, rendered as
+	 * its program renders (a camera and a mistake fitted at once). */
+	const struct grade_variant *variant;
 };
 
 /* A level of sub (the submission) in cells of w x h, or of the pixels

@@ -48,13 +48,18 @@ void grade_variant_plain(const struct grade_job *job, struct grade_variant *v);
 bool grade_variant_combine(const struct grade_variant *a, const struct grade_variant *b,
 			   struct grade_variant *out);
 
-/* True for the causes that transform the reference (no render). */
-bool grade_cause_is_transform(enum grade_cause c);
 /* The map of a transform cause. */
 unsigned grade_cause_map(enum grade_cause c);
 
 /* The reference transformed as map says (enum grade_map). */
 int grade_transform_map(const struct image *ref, unsigned map, struct image *out, struct diag *d);
+
+/* The colour the variant's program traces along r (its rules, settings
+ * and floor), before it is stored; and that colour as it encodes it
+ * (gamma), before the bytes.  The one place a cause's colour is made. */
+struct color grade_variant_trace(const struct grade_job *job, const struct grade_variant *v,
+				 const struct ray *r);
+struct color grade_variant_encode(const struct grade_variant *v, struct color c);
 
 /* Renders, for each of the n variants, the listed pixels (indices y *
  * width + x; NULL: every pixel) into imgs[i], which have the camera's

@@ -39,12 +39,12 @@ static struct ray grade_corner_ray(const struct camera *c, int x, int y, double 
 	return r;
 }
 
-static struct color grade_sample(const struct grade_work *w, const struct grade_variant *v,
+struct color grade_variant_trace(const struct grade_job *job, const struct grade_variant *v,
 				 const struct ray *r)
 {
-	return v->use_rules ? shade_rules_trace_floor(w->job->scene, &v->settings, v->rules,
+	return v->use_rules ? shade_rules_trace_floor(job->scene, &v->settings, v->rules,
 						      v->other_floor ? &v->floor : NULL, r, 1)
-			    : render_trace(w->job->scene, &v->settings, r, 1, NULL);
+			    : render_trace(job->scene, &v->settings, r, 1, NULL);
 }
 
 /* The colour of pixel (x, y) as the variant renders it, as render_image
@@ -63,13 +63,13 @@ static struct color grade_pixel(const struct grade_work *w, const struct grade_v
 
 	if (n == 1) {
 		r = v->corner ? grade_corner_ray(cam, x, y, v->cx, v->cy) : camera_ray(cam, x, y);
-		return grade_sample(w, v, &r);
+		return grade_variant_trace(w->job, v, &r);
 	}
 	for (j = 0; j < n; j++)
 		for (i = 0; i < n; i++) {
 			r = v->corner ? grade_corner_ray(cam, x, y, (i + v->cx) / n, (j + v->cy) / n)
 				      : camera_ray_at(cam, x + (i + 0.5) / n, y + (j + 0.5) / n);
-			sum = color_add(sum, color_clamp(grade_sample(w, v, &r)));
+			sum = color_add(sum, color_clamp(grade_variant_trace(w->job, v, &r)));
 		}
 	return color_scale(sum, 1.0 / ((double)n * n));
 }
@@ -109,12 +109,18 @@ static double grade_gamma(double c, int curve)
 	return pow(c, 1.0 / 2.2);
 }
 
+struct color grade_variant_encode(const struct grade_variant *v, struct color c)
+{
+	if (!v->gamma)
+		return c;
+	return color_make(grade_gamma(c.r, v->gamma), grade_gamma(c.g, v->gamma),
+			  grade_gamma(c.b, v->gamma));
+}
+
 static void grade_store(const struct grade_variant *v, struct color c, uint8_t *round,
 			uint8_t *trunc_out)
 {
-	if (v->gamma)
-		c = color_make(grade_gamma(c.r, v->gamma), grade_gamma(c.g, v->gamma),
-			       grade_gamma(c.b, v->gamma));
+	c = grade_variant_encode(v, c);
 	if (v->map & GRADE_MAP_RED_BLUE)
 		c = color_make(c.b, c.g, c.r);
 	if (v->wrap) {

@@ -271,6 +271,50 @@ static void test_fit_level_jacobian_against_differences(void **state)
 	setup_free(&s);
 }
 
+/* A level fitted to a cause's image (the submission has no shadows):
+ * the camera that took it scores nothing with the cause rendered in
+ * place of the reference, and far from nothing without it; and the fit
+ * with the cause refuses a transform (a mirror is no render). */
+static void test_fit_level_with_a_cause(void **state)
+{
+	struct setup s;
+	struct fit_level l;
+	struct fit_scratch sc;
+	struct grade_variant var;
+	struct grade_rank r;
+	struct grade_fit fit;
+	struct image shadowless;
+	struct diag d;
+	double v[FIT_DIM];
+
+	(void)state;
+	setup_make(&s, 60);
+	memset(&r, 0, sizeof(r));
+	r.cause = RT_CAUSE_NO_SHADOWS;
+	r.also = RT_CAUSE_NONE;
+	assert_int_equal(grade_cause_image(&s.job, &s.sub, &r, &shadowless, &d), 0);
+	assert_int_equal(fit_level_grid(&l, &shadowless, 20, 20, 2, 1.5, &d), 0);
+	assert_int_equal(fit_scratch_alloc(&sc, &l, &d), 0);
+	fit_view_of(&s.params, v);
+	assert_true(fit_level_score(&l, &s.job, &s.params, v, &sc) > 4.0);
+	assert_true(grade_variant_of(&s.job, RT_CAUSE_NO_SHADOWS, 0, &var));
+	l.variant = &var;
+	assert_true(fit_level_score(&l, &s.job, &s.params, v, &sc) < 0.25);
+	fit_scratch_free(&sc);
+	fit_level_free(&l);
+
+	/* From the true camera the fit with the cause stays there. */
+	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_NO_SHADOWS, 0, &shadowless,
+					       &fit, &d), 0);
+	assert_true(fit.score < 0.5);
+	assert_vec3_near(fit.camera.eye, s.params.eye, 0.5);
+	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_MIRRORED, 0, &shadowless,
+					       &fit, &d), -RT_E_INVALID);
+	assert_true(strstr(d.msg, "form") != NULL);
+	image_free(&shadowless);
+	setup_free(&s);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -280,6 +324,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_fit_blur_keeps_flat_and_sum),
 		cmocka_unit_test(test_fit_level_weighs_aliased_cells),
 		cmocka_unit_test(test_fit_level_jacobian_against_differences),
+		cmocka_unit_test(test_fit_level_with_a_cause),
 	};
 
 	return SUPPORT_RUN(tests, argc, argv);
