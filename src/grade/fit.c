@@ -868,6 +868,10 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
  * blurred enough to leave the floor's alias a first pass settled on for
  * the true camera a few cells away, sharp enough to stay near. */
 #define FIT_REFIT_FIRST_STAGE 2
+/* A first pass whose last level is within this mean squared grey
+ * difference (a level's rounding is 1/12; 1 is 48 dB) found the camera:
+ * no alias looks that much like the image, so no second pass. */
+#define FIT_SETTLED_SCORE 1.0
 
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
@@ -879,7 +883,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	 * guess; a second from where it ended, with one hypothesis, often
 	 * finds the camera that alias hid (the same last level: the scores
 	 * compare). */
-	if (rc < 0 || (int)fit_env("FIT_PASSES", 2) < 2)
+	if (rc < 0 || out->score <= FIT_SETTLED_SCORE || (int)fit_env("FIT_PASSES", 2) < 2)
 		return rc;
 	if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
 		return rc;
