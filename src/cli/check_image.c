@@ -320,7 +320,10 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
  * ranked there, and with the tiles swapped, rendered in place of the
  * reference.  A cause whose image at its own camera comes nearer than
  * the best explanation so far by CHECK_REFIT_GAIN moves the camera found
- * there, where the submission is judged again. */
+ * there, where the submission is judged again.  The refitted image is
+ * measured on every pixel, the ranks with the ties left out: a refit
+ * must beat them with that handicap, so it moves the camera only when it
+ * is clearly better. */
 #define CHECK_REFIT_CAUSES 3
 #define CHECK_REFIT_GAIN 1.0
 
