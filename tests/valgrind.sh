@@ -13,10 +13,43 @@ if ! command -v valgrind >/dev/null; then
 fi
 VG="valgrind -q --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=all --error-exitcode=99"
 
+# The cases in shards run at once, one a core (at most VG_SHARDS, default
+# 2): memcheck runs a program's threads one at a time, so one run keeps
+# one core busy.  Each shard is this script again with VG_SHARD set; it
+# runs every VG_SHARDS-th case (mine), and this run adds up their counts.
+if [ -z "${VG_SHARD:-}" ]; then
+	shards=$(nproc 2>/dev/null || echo 1)
+	[ "$shards" -gt "${VG_SHARDS:-2}" ] && shards=${VG_SHARDS:-2}
+	for i in $(seq 0 $((shards - 1))); do
+		VG_SHARD=$i VG_SHARDS=$shards "$0" "$@" >"$T/shard$i" 2>&1 &
+	done
+	wait
+	for i in $(seq 0 $((shards - 1))); do
+		grep -v "^$SUITE: [0-9]* passed" "$T/shard$i"
+		counts=$(sed -n "s/^$SUITE: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped.*/\1 \2 \3/p" "$T/shard$i")
+		if [ -z "$counts" ]; then
+			bad "shard $i" "ended without its summary"
+			continue
+		fi
+		set -- $counts
+		pass=$((pass + $1))
+		fail=$((fail + $2))
+		skipped=$((skipped + $3))
+	done
+	echo "$SUITE: $shards shards at once"
+	finish
+fi
+vg_case=0
+mine() {
+	vg_case=$((vg_case + 1))
+	[ $(((vg_case - 1) % VG_SHARDS)) -eq "$VG_SHARD" ]
+}
+
 # vg NAME WANT_RC ARGS...: whitted under valgrind in $T/wd.
 vg() {
 	local name=$1 want=$2
 	shift 2
+	mine || return 0
 	clean_wd
 	(cd "$T/wd" && $VG "$W" "$@") >"$T/out" 2>"$T/err"
 	local rc=$?
@@ -50,7 +83,7 @@ for f in "$ROOT"/tests/errors/*.txt; do
 	vg "errors/$(basename "$f")" 1 -s 16 -o out.png "$f"
 	n=$((n + 1))
 done
-check "errors: at least 50 files" [ "$n" -ge 50 ]
+! mine || check "errors: at least 50 files" [ "$n" -ge 50 ]
 vg "missing scene" 1 -o out.png "$T/nosuch.txt"
 vg "scene is a directory" 1 -o out.png "$T"
 vg "bad option value" 2 -s 12x "$ROOT/scenes/scene.txt"
@@ -94,6 +127,7 @@ vg "glass named twice" 2 -s 16 --glass 2,2:1.2 -o out.png "$ROOT/scenes/sphere.t
 # scene2pov writing the textures' PNGs, and failing after them (OUT.pov a
 # directory: they are removed).
 for out in out.pov dir.pov; do
+	mine || continue
 	clean_wd
 	mkdir "$T/wd/dir.pov"
 	(cd "$T/wd" && $VG "$ROOT/build/scene2pov" -q -s 16 \
@@ -114,6 +148,7 @@ done
 
 # The failure paths of the write and of an interrupted render.
 for f in png bmp ppm; do
+	mine || continue
 	clean_wd
 	(ulimit -f 1 && cd "$T/wd" && exec $VG "$W" -s 128 -o "x.$f" "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err"
 	rc=$?
@@ -168,19 +203,21 @@ vg "a glass sphere at recursion 256" 0 -j 2 --glass 1 -o out.png "$T/sphere256.t
 rm -f "$T/fifo.png" && mkfifo "$T/fifo.png"
 vg "a FIFO as a texture" 1 -s 8 --floor-texture "$T/fifo.png" -o out.png "$ROOT/scenes/scene.txt"
 
-clean_wd
-(cd "$T/wd" && exec $VG "$W" -s 1000 -j 2 -o x.png "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err" &
-pid=$!
-sleep 3
-kill -s INT $pid
-sent=$?
-wait $pid
-rc=$?
-if [ "$sent" -ne 0 ] || [ "$rc" -ne 130 ] || grep -q '^==[0-9]*==' "$T/err" || ! wd_empty; then
-	bad "SIGINT during a render" "signal sent: $sent, exit $rc, left: $(wd_files)"
-	sed 's/^/    /' "$T/err" | head -40
-else
-	ok
+if mine; then
+	clean_wd
+	(cd "$T/wd" && exec $VG "$W" -s 1000 -j 2 -o x.png "$ROOT/scenes/scene.txt") >"$T/out" 2>"$T/err" &
+	pid=$!
+	sleep 3
+	kill -s INT $pid
+	sent=$?
+	wait $pid
+	rc=$?
+	if [ "$sent" -ne 0 ] || [ "$rc" -ne 130 ] || grep -q '^==[0-9]*==' "$T/err" || ! wd_empty; then
+		bad "SIGINT during a render" "signal sent: $sent, exit $rc, left: $(wd_files)"
+		sed 's/^/    /' "$T/err" | head -40
+	else
+		ok
+	fi
 fi
 
 finish
