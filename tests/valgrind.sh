@@ -19,26 +19,34 @@ VG="valgrind -q --leak-check=full --show-leak-kinds=all --errors-for-leak-kinds=
 # runs every VG_SHARDS-th case (mine), and this run adds up their counts.
 if [ -z "${VG_SHARD:-}" ]; then
 	shards=$(nproc 2>/dev/null || echo 1)
-	[ "$shards" -gt "${VG_SHARDS:-2}" ] && shards=${VG_SHARDS:-2}
+	want=${VG_SHARDS:-2}
+	[ "$want" -ge 1 ] 2>/dev/null || want=1
+	[ "$shards" -gt "$want" ] && shards=$want
+	pids=""
+	trap 'kill $pids 2>/dev/null; exit 130' INT TERM
 	for i in $(seq 0 $((shards - 1))); do
 		VG_SHARD=$i VG_SHARDS=$shards "$0" "$@" >"$T/shard$i" 2>&1 &
+		pids="$pids $!"
 	done
 	wait
 	for i in $(seq 0 $((shards - 1))); do
 		grep -v "^$SUITE: [0-9]* passed" "$T/shard$i"
-		counts=$(sed -n "s/^$SUITE: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped.*/\1 \2 \3/p" "$T/shard$i")
-		if [ -z "$counts" ]; then
+		line=$(grep "^$SUITE: [0-9]* passed, [0-9]* failed, [0-9]* skipped" "$T/shard$i" | tail -1)
+		if [ -z "$line" ]; then
 			bad "shard $i" "ended without its summary"
 			continue
 		fi
-		set -- $counts
+		set -- $(echo "$line" | sed 's/^[^:]*: \([0-9]*\) passed, \([0-9]*\) failed, \([0-9]*\) skipped.*/\1 \2 \3/')
 		pass=$((pass + $1))
 		fail=$((fail + $2))
 		skipped=$((skipped + $3))
+		why=$(echo "$line" | sed -n 's/^[^:]*: [0-9]* passed, [0-9]* failed, [0-9]* skipped: //p')
+		[ -n "$why" ] && skip_why=${skip_why:+$skip_why; }$why
 	done
-	echo "$SUITE: $shards shards at once"
+	echo "($SUITE ran in $shards shards at once)"
 	finish
 fi
+[ "${VG_SHARDS:-0}" -ge 1 ] 2>/dev/null || VG_SHARDS=1
 vg_case=0
 mine() {
 	vg_case=$((vg_case + 1))

@@ -176,8 +176,9 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 /* The camera refined from start on the fit's finer levels with form
  * `form` of cause c rendered in place of the reference: a camera and a
  * shading mistake at once (the mistake pulls a fit of the plain
- * reference away).  -RT_E_INVALID for a transform or a form the cause
- * does not have.  Deterministic as grade_fit_camera. */
+ * reference away).  -RT_E_INVALID for a transform, a form the cause
+ * does not have, or one the fit cannot render (rays through the pixels'
+ * corners, bytes that wrap).  Deterministic as grade_fit_camera. */
 int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,
 			  enum grade_cause cause, int form, const struct image *sub,
 			  struct grade_fit *out, struct diag *d);

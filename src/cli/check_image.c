@@ -147,6 +147,27 @@ static int check_found_view(const struct check_reference *ref, const struct chec
 	return check_view_make(ref, p, v->camera.width, v->camera.height, angle, out, d);
 }
 
+/* The image as it is (res->fig may have judged a textured floor as the
+ * reference's) against the references at two cameras, on the same
+ * pixels: neither camera's ties (a found camera's take in every edge,
+ * where a wrong camera differs most). */
+static int check_compare_cameras(const struct check_view *a, const struct check_view *b,
+				 const struct image *sub, struct grade_figures *fa,
+				 struct grade_figures *fb, struct diag *d)
+{
+	size_t total = (size_t)sub->width * (size_t)sub->height, i;
+	uint8_t *skip = rt_calloc(total, 1);
+
+	if (!skip)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the ties");
+	for (i = 0; i < total; i++)
+		skip[i] = (a->ties && a->ties[i]) || (b->ties && b->ties[i]);
+	grade_figures_skipping(&a->image, sub, skip, fa);
+	grade_figures_skipping(&b->image, sub, skip, fb);
+	rt_free(skip);
+	return 0;
+}
+
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
@@ -154,7 +175,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 {
 	struct camera_params starts[2];
 	struct grade_fit fit;
-	struct grade_figures rounded, given;
+	struct grade_figures rounded, given, found;
 	bool truncated;
 	int n = 1, rc;
 
@@ -174,20 +195,17 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
-	/* Both cameras' figures of the image as it is (res->fig may have
-	 * judged a textured floor as the reference's). */
-	grade_figures_skipping(&v->image, &res->image, v->ties, &given);
+	if ((rc = check_compare_cameras(v, &res->found, &res->image, &given, &found, d)) < 0)
+		return rc;
 	/* Nearer in colour, or in grey (the fit's own figures: an image
 	 * with a colour mistake on top, red and blue swapped, fits its
 	 * camera as well) and not farther in colour: an image of another
 	 * scene can find a camera whose greys are nearer while its colours
 	 * are farther than the given camera's. */
 	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
-		     ((res->fig_found.psnr >= given.psnr + CHECK_MOVED_GAIN &&
-		       res->fig_found.psnr >= CHECK_MOVED_PSNR) ||
+		     ((found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
-		       fit.score <= CHECK_MOVED_GREY_MSE &&
-		       res->fig_found.psnr > given.psnr));
+		       fit.score <= CHECK_MOVED_GREY_MSE && found.psnr > given.psnr));
 	if (!res->moved)
 		check_view_free(&res->found);
 	return 0;
@@ -320,7 +338,8 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
  * ranked there, and with the tiles swapped, rendered in place of the
  * reference.  A cause whose image at its own camera comes nearer than
  * the best explanation so far by CHECK_REFIT_GAIN moves the camera found
- * there, where the submission is judged again.  The refitted image is
+ * there, where the submission is judged again (or, when that camera is
+ * the given one, at the given camera).  The refitted image is
  * measured on every pixel, the ranks with the ties left out: a refit
  * must beat them with that handicap, so it moves the camera only when it
  * is clearly better. */
@@ -336,6 +355,11 @@ static int check_refit(struct check_reference *ref, const struct check_view *giv
 	struct camera_params best_camera;
 	bool better = false;
 	struct check_view view;
+
+	/* A textured floor is judged as the reference's: the refit, on the
+	 * image as it is, could not be measured against that. */
+	if (res->floor_textured)
+		return 0;
 
 	for (k = 0; k < (int)res->n_ranks && n < CHECK_REFIT_CAUSES; k++) {
 		const struct grade_rank *r = &res->ranks[k];
@@ -395,6 +419,13 @@ static int check_refit(struct check_reference *ref, const struct check_view *giv
 	if ((rc = check_found_view(ref, given, &best_camera, &view, d)) < 0)
 		return rc;
 	check_view_free(&res->found);
+	/* The cause's camera may be the given one after all (the mistake had
+	 * pulled the plain fit away): then the camera did not move. */
+	if (check_displacement(given, &view) <= CHECK_MOVED_PIXELS) {
+		check_view_free(&view);
+		res->moved = false;
+		return 0;
+	}
 	res->found = view;
 	res->n_ranks = 0;
 	return check_at(&res->found, res, &res->fig_found, true, d);
@@ -488,6 +519,8 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 		if (!res->fig_found.match && res->explained != CHECK_EXPLAINED &&
 		    (rc = check_refit(ref, v, res, d)) < 0)
 			return rc;
+	}
+	if (res->moved) {
 		if (res->fig_found.match) {
 			res->verdict = CHECK_MATCH;
 			res->explained = CHECK_EXPLAINED;

@@ -887,7 +887,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		return rc;
 	if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
 		return rc;
-	if (again.score < out->score) {
+	if (again.evals > 0 && again.score < out->score) {
 		again.evals += out->evals;
 		again.start_score = out->start_score;
 		*out = again;
@@ -903,7 +903,11 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 {
 	struct grade_variant v;
 
-	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v))
+	/* The fit's levels trace through pixel centres and saturate: a
+	 * cause that moves the rays to the corners or wraps the bytes is not
+	 * fitted (nor is a transform, which is no render). */
+	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v) || v.corner ||
+	    v.wrap)
 		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
 	return fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
 }

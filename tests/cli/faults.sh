@@ -160,10 +160,16 @@ signal_test() {
 	fi
 	# A hang-up ignored on entry (the suite run under nohup) stays
 	# ignored, as it should: whitted is started with it at its default.
-	(cd "$T/sig" && exec python3 -c 'import os, signal, sys
-signal.signal(signal.SIGHUP, signal.SIG_DFL)
-os.execv(sys.argv[1], sys.argv[1:])' "$W" -q -s 6000 -r 8 -o big.png "$SCENE") >"$T/out" 2>"$T/err" &
-	local pid=$!
+	(cd "$T/sig" && exec env --default-signal=HUP "$W" -q -s 6000 -r 8 -o big.png "$SCENE") \
+		>"$T/out" 2>"$T/err" &
+	local pid=$! w_exe
+	# The signal comes once whitted runs in env's place, and is rendering.
+	w_exe=$(readlink -f "$W")
+	for _ in $(seq 100); do
+		[ "$(readlink "/proc/$pid/exe" 2>/dev/null)" = "$w_exe" ] && break
+		[ -d /proc/$pid ] || break
+		sleep 0.05
+	done
 	sleep 0.3
 	kill -s "$sig" $pid
 	local sent=$?

@@ -137,7 +137,9 @@ for try in 1 2; do
 	[ "$wrc" -le 2 ] && break
 	echo "$SUITE: wine exited $wrc starting scene2pov.exe (try $try): $(tr -d '\r' <"$T/werr" | head -3)"
 done
-check scene2pov-status [ "$wrc" -eq 0 ]
+if [ "$wrc" -eq 0 ]; then ok; else
+	bad scene2pov-status "exit $wrc: $(tr -d '\r' <"$T/werr" | head -3)"
+fi
 # (Its text files have Windows' line ends there.)
 check scene2pov-crlf grep -q $'\r$' "$T/wd/win.pov"
 check scene2pov cmp -s "$T/wd/lin.pov" <(tr -d '\r' <"$T/wd/win.pov")

@@ -274,7 +274,8 @@ static void test_fit_level_jacobian_against_differences(void **state)
 /* A level fitted to a cause's image (the submission has no shadows):
  * the camera that took it scores nothing with the cause rendered in
  * place of the reference, and far from nothing without it; and the fit
- * with the cause refuses a transform (a mirror is no render). */
+ * with the cause refuses a transform (a mirror is no render) and rays
+ * through the pixels' corners. */
 static void test_fit_level_with_a_cause(void **state)
 {
 	struct setup s;
@@ -311,6 +312,9 @@ static void test_fit_level_with_a_cause(void **state)
 	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_MIRRORED, 0, &shadowless,
 					       &fit, &d), -RT_E_INVALID);
 	assert_true(strstr(d.msg, "form") != NULL);
+	/* Rays through the pixels' corners: not what the fit's levels render. */
+	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_PIXEL_CORNERS, 0, &shadowless,
+					       &fit, &d), -RT_E_INVALID);
 	image_free(&shadowless);
 	setup_free(&s);
 }
