@@ -148,6 +148,19 @@ done
 # A scene error leaves an existing output alone too.
 fault "scene error" 1 'error: expected a number' "$T/se" x.png -- -s 8 "$ROOT/tests/errors/letter-in-number.txt"
 
+# wait_whitted PID: until the program started as PID (env, nohup) has
+# become whitted (at most 5 s): a loaded machine once took longer than a
+# fixed 0.3 s to get there, and the signal went to the launcher.
+wait_whitted() {
+	local w_exe
+	w_exe=$(readlink -f "$W")
+	for _ in $(seq 100); do
+		[ "$(readlink "/proc/$1/exe" 2>/dev/null)" = "$w_exe" ] && break
+		[ -d "/proc/$1" ] || break
+		sleep 0.05
+	done
+}
+
 # SIGINT and SIGTERM during a render: exit 128+N, one message, no output,
 # no temporary file, an existing output untouched.  The image is large
 # enough (a few seconds) that the signal always comes during the render.
@@ -162,14 +175,9 @@ signal_test() {
 	# ignored, as it should: whitted is started with it at its default.
 	(cd "$T/sig" && exec env --default-signal=HUP "$W" -q -s 6000 -r 8 -o big.png "$SCENE") \
 		>"$T/out" 2>"$T/err" &
-	local pid=$! w_exe
+	local pid=$!
 	# The signal comes once whitted runs in env's place, and is rendering.
-	w_exe=$(readlink -f "$W")
-	for _ in $(seq 100); do
-		[ "$(readlink "/proc/$pid/exe" 2>/dev/null)" = "$w_exe" ] && break
-		[ -d /proc/$pid ] || break
-		sleep 0.05
-	done
+	wait_whitted $pid
 	sleep 0.3
 	kill -s "$sig" $pid
 	local sent=$?
@@ -198,14 +206,8 @@ rm -rf "$T/sig" && mkdir -p "$T/sig"
 (cd "$T/sig" && exec nohup "$W" -s 6000 -r 8 -o big.png "$SCENE") >/dev/null 2>&1 &
 pid=$!
 # The hang-up must come once nohup has made it ignored, that is once
-# whitted runs in its place: a loaded machine once took longer than a
-# fixed 0.3 s to get there (and the signal killed nohup).
-w_exe=$(readlink -f "$W")
-for _ in $(seq 100); do
-	[ "$(readlink "/proc/$pid/exe" 2>/dev/null)" = "$w_exe" ] && break
-	[ -d /proc/$pid ] || break
-	sleep 0.05
-done
+# whitted runs in its place.
+wait_whitted $pid
 sleep 0.3
 kill -s HUP $pid
 sent=$?
