@@ -24,4 +24,9 @@ void text_printf(struct text_buf *t, const char *fmt, ...)
  * starting with '-' gets "./" before it, so that it is not an option. */
 void text_shell_word(struct text_buf *t, const char *s);
 
+/* The length (1 to 4) of the UTF-8 sequence s starts with, or 0 when its
+ * first byte starts none (a NUL inside ends a sequence as any byte that
+ * is no continuation does). */
+int text_utf8_length(const unsigned char *s);
+
 #endif

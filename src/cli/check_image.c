@@ -431,6 +431,20 @@ static int check_refit(struct check_reference *ref, const struct check_view *giv
 	return check_at(&res->found, res, &res->fig_found, true, d);
 }
 
+/* After the submission's read (status rc): out of memory is an error of
+ * the run, an unreadable image a verdict, and a read image is checked. */
+static int check_image_loaded(struct check_reference *ref, struct check_result *res, int rc,
+			      struct diag *d)
+{
+	if (rc == -RT_E_NOMEM)
+		return diag_fail(d, RT_E_NOMEM, "%s", res->error.msg);
+	if (rc < 0) {
+		res->verdict = CHECK_UNREADABLE;
+		return 0;
+	}
+	return check_image_read(ref, res, d);
+}
+
 int check_image(struct check_reference *ref, const char *path, struct check_result *res,
 		struct diag *d)
 {
@@ -439,13 +453,7 @@ int check_image(struct check_reference *ref, const char *path, struct check_resu
 	memset(res, 0, sizeof(*res));
 	diag_clear(&res->error);
 	rc = image_read(path, &res->image, NULL, &res->error);
-	if (rc == -RT_E_NOMEM)
-		return diag_fail(d, RT_E_NOMEM, "%s", res->error.msg);
-	if (rc < 0) {
-		res->verdict = CHECK_UNREADABLE;
-		return 0;
-	}
-	return check_image_read(ref, res, d);
+	return check_image_loaded(ref, res, rc, d);
 }
 
 int check_image_data(struct check_reference *ref, const char *name, const unsigned char *data,
@@ -456,13 +464,7 @@ int check_image_data(struct check_reference *ref, const char *name, const unsign
 	memset(res, 0, sizeof(*res));
 	diag_clear(&res->error);
 	rc = image_read_memory(data, len, name, &res->image, NULL, &res->error);
-	if (rc == -RT_E_NOMEM)
-		return diag_fail(d, RT_E_NOMEM, "%s", res->error.msg);
-	if (rc < 0) {
-		res->verdict = CHECK_UNREADABLE;
-		return 0;
-	}
-	return check_image_read(ref, res, d);
+	return check_image_loaded(ref, res, rc, d);
 }
 
 /* The check of res->image, read. */

@@ -5,40 +5,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/text.h"
 #include "cli/check.h"
 #include "cli/cli.h"
 #include "cli/tool.h"
 
 /* Causes listed after the first. */
 #define COMPARE_LISTED 5
-
-/* The length of the well-formed UTF-8 sequence at s (1 to 4), or 0. */
-static int utf8_length(const unsigned char *s)
-{
-	int n, k;
-	unsigned cp;
-
-	if (s[0] < 0x80)
-		return 1;
-	if (s[0] >= 0xc2 && s[0] <= 0xdf)
-		n = 2, cp = s[0] & 0x1fu;
-	else if (s[0] >= 0xe0 && s[0] <= 0xef)
-		n = 3, cp = s[0] & 0x0fu;
-	else if (s[0] >= 0xf0 && s[0] <= 0xf4)
-		n = 4, cp = s[0] & 0x07u;
-	else
-		return 0;
-	for (k = 1; k < n; k++) {
-		if ((s[k] & 0xc0) != 0x80)
-			return 0;
-		cp = cp << 6 | (s[k] & 0x3fu);
-	}
-	/* Overlong forms, surrogates and beyond U+10FFFF are not UTF-8. */
-	if ((n == 3 && cp < 0x800) || (n == 4 && (cp < 0x10000 || cp > 0x10ffff)) ||
-	    (cp >= 0xd800 && cp <= 0xdfff))
-		return 0;
-	return n;
-}
 
 /* A JSON string of s, valid whatever the bytes (a file name need not be
  * UTF-8): a byte that is not part of a UTF-8 sequence is written as
@@ -49,7 +22,7 @@ static void json_string(const char *s)
 
 	putchar('"');
 	while (*p) {
-		int n = utf8_length(p);
+		int n = text_utf8_length(p);
 		if (*p == '"' || *p == '\\')
 			printf("\\%c", *p);
 		else if (*p < 0x20 || *p == 0x7f)
