@@ -224,15 +224,20 @@ if [ "$have_embree" = yes ] && [ -x "$BUILD/embree_build" ]; then
 else
 	echo "Embree is not compared ($EMBREE_W missing: install libembree-dev, then make bench)."
 fi
-if [ "$compare_cases" = yes ]; then
-	"$WHITTED" -q -s 768 -j "$THREADS" -o "$DIR/compare-ref.ppm" scenes/scene.txt
-	python3 - "$DIR/compare-ref.ppm" "$DIR/compare-swapped.ppm" <<'PY'
+# swap_red_blue IN.ppm OUT.ppm: the P6 image with its red and blue swapped
+# (a BMP writer's classic mistake, for compare to rank).
+swap_red_blue() {
+	python3 - "$1" "$2" <<'PY'
 import sys
 d = open(sys.argv[1], 'rb').read(); m, dims, mx, px = d.split(b'\n', 3)
 out = bytearray(px)
 out[0::3], out[2::3] = px[2::3], px[0::3]
 open(sys.argv[2], 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + bytes(out))
 PY
+}
+if [ "$compare_cases" = yes ]; then
+	"$WHITTED" -q -s 768 -j "$THREADS" -o "$DIR/compare-ref.ppm" scenes/scene.txt
+	swap_red_blue "$DIR/compare-ref.ppm" "$DIR/compare-swapped.ppm"
 	bench_compare match scenes/scene.txt "$DIR/compare-ref.ppm"
 	bench_compare differs scenes/scene.txt "$DIR/compare-swapped.ppm"
 	# Another camera (moved and turned as the keyboard moves it): the
@@ -241,13 +246,7 @@ PY
 	# cause again at the camera found).
 	"$WHITTED" -q -s 768 -j "$THREADS" --eye 38,-172,46 --look 2,-60,14 --up 0.05,0.25,0.97 --fov 72 \
 		-o "$DIR/compare-moved.ppm" scenes/scene.txt
-	python3 - "$DIR/compare-moved.ppm" "$DIR/compare-moved-rb.ppm" <<'PY'
-import sys
-d = open(sys.argv[1], 'rb').read(); m, dims, mx, px = d.split(b'\n', 3)
-out = bytearray(px)
-out[0::3], out[2::3] = px[2::3], px[0::3]
-open(sys.argv[2], 'wb').write(b'%s\n%s\n%s\n' % (m, dims, mx) + bytes(out))
-PY
+	swap_red_blue "$DIR/compare-moved.ppm" "$DIR/compare-moved-rb.ppm"
 	bench_compare moved scenes/scene.txt "$DIR/compare-moved.ppm"
 	bench_compare moved-rb scenes/scene.txt "$DIR/compare-moved-rb.ppm"
 	# A course file with 9 lights, the slowest to shade, at the same size:
