@@ -70,6 +70,13 @@ int check_view_make(const struct check_reference *ref, const struct camera_param
 		    int height, double angle, struct check_view *v, struct diag *d);
 void check_view_free(struct check_view *v);
 
+/* How far camera b shows what camera a shows at its pixels, in pixels
+ * (the median of a grid of a's hits seen through b; check_geometry.c). */
+double check_displacement(const struct check_view *a, const struct check_view *b);
+/* Whether sub's floor is textured where ref's (ids: ref's object ids) is
+ * a plain checker. */
+bool check_floor_textured(const struct image *ref, const struct image *sub, const int32_t *ids);
+
 enum check_verdict {
 	CHECK_MATCH,		/* within the gate (at the given camera, or at the one found) */
 	CHECK_DIFFERS,

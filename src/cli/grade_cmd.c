@@ -14,26 +14,6 @@
 #include "cli/grade_class.h"
 #include "cli/tool.h"
 
-const char *grade_verdict_name(enum check_verdict v)
-{
-	return v == CHECK_MATCH ? "match" : v == CHECK_DIFFERS ? "differs" : "unreadable";
-}
-
-const char *grade_outcome(const struct grade_row *r, char *buf, size_t size)
-{
-	const struct check_result *res = &r->res;
-
-	if (res->verdict == CHECK_UNREADABLE)
-		return "unreadable";
-	if (res->verdict == CHECK_MATCH)
-		return res->moved ? "camera" : "match";
-	if (res->explained == CHECK_EXPLAINED && res->n_ranks > 0) {
-		snprintf(buf, size, "%s", r->best);
-		return buf;
-	}
-	return res->explained == CHECK_CLOSE ? "close" : "differs";
-}
-
 /* The points of a row by the table. */
 static double grade_points_of(const struct grade_class *c, const struct grade_row *r)
 {

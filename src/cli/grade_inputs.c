@@ -16,83 +16,6 @@
 /* How deep a folder of submissions is walked. */
 #define GRADE_MAX_DEPTH 8
 
-static char *grade_strdup(const char *s)
-{
-	size_t n = strlen(s) + 1;
-	char *c = rt_malloc(n);
-
-	if (c)
-		memcpy(c, s, n);
-	return c;
-}
-
-int grade_inputs_add(struct grade_inputs *in, const char *label, const char *path,
-		     unsigned char *data, size_t len, struct diag *d)
-{
-	struct grade_input *g;
-
-	if (in->n == in->cap) {
-		size_t cap = in->cap ? 2 * in->cap : 16;
-		struct grade_input *v = rt_reallocarray(in->v, cap, sizeof(*v));
-		if (!v) {
-			rt_free(data);
-			return diag_fail(d, RT_E_NOMEM, "out of memory for the submissions");
-		}
-		in->v = v;
-		in->cap = cap;
-	}
-	g = &in->v[in->n];
-	memset(g, 0, sizeof(*g));
-	g->label = grade_strdup(label);
-	g->path = path ? grade_strdup(path) : NULL;
-	g->data = data;
-	g->len = len;
-	g->scene = -1;
-	if (!g->label || (path && !g->path)) {
-		rt_free(g->label);
-		rt_free(g->path);
-		rt_free(data);
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the submissions");
-	}
-	in->n++;
-	return 0;
-}
-
-void grade_inputs_free(struct grade_inputs *in)
-{
-	size_t k;
-
-	for (k = 0; k < in->n; k++) {
-		rt_free(in->v[k].label);
-		rt_free(in->v[k].student);
-		rt_free(in->v[k].id);
-		rt_free(in->v[k].path);
-		rt_free(in->v[k].data);
-	}
-	rt_free(in->v);
-	memset(in, 0, sizeof(*in));
-}
-
-static bool grade_ends_with(const char *s, const char *tail)
-{
-	size_t a = strlen(s), b = strlen(tail), i;
-
-	if (a < b)
-		return false;
-	for (i = 0; i < b; i++)
-		if (tolower((unsigned char)s[a - b + i]) != tail[i])
-			return false;
-	return true;
-}
-
-/* What a folder's walk takes: images (also the lossy kinds, which grade
- * reports as such) and zip files. */
-static bool grade_is_image_name(const char *name)
-{
-	return image_format_from_path(name) != RT_FORMAT_UNKNOWN || grade_ends_with(name, ".jpg") ||
-	       grade_ends_with(name, ".jpeg") || grade_ends_with(name, ".pnm");
-}
-
 static int grade_name_cmp(const void *a, const void *b)
 {
 	return strcmp(*(char *const *)a, *(char *const *)b);
@@ -229,8 +152,8 @@ static int grade_student(struct grade_input *g, const char *operand, bool multi,
 		else
 			grade_stem(rel, rel + strlen(rel), name, sizeof(name));
 	}
-	g->student = grade_strdup(name);
-	g->id = grade_strdup(id);
+	g->student = rt_strdup(name);
+	g->id = rt_strdup(id);
 	if (!g->student || !g->id)
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the submissions");
 	return 0;

@@ -5,6 +5,7 @@
 #ifndef RT_CLI_GRADE_INPUTS_H
 #define RT_CLI_GRADE_INPUTS_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "whitted/diag.h"
@@ -37,8 +38,14 @@ void grade_inputs_free(struct grade_inputs *in);
  * as inputs of student "" with their bytes read (grade_zip.c). */
 int grade_zip_read(const char *path, struct grade_inputs *out, struct diag *d);
 
-/* Adds an input (copies the strings; takes data); NULL path with data. */
+/* Adds an input (copies the strings; takes data); NULL path with data
+ * (grade_input_list.c, like the two below). */
 int grade_inputs_add(struct grade_inputs *in, const char *label, const char *path,
 		     unsigned char *data, size_t len, struct diag *d);
+/* Whether s ends with tail, the case of s aside (tail in lower case). */
+bool grade_ends_with(const char *s, const char *tail);
+/* Whether a file's name is an image's: the formats whitted reads, and
+ * JPEG and PNM, which grade reports as such. */
+bool grade_is_image_name(const char *name);
 
 #endif

@@ -14,17 +14,15 @@
 /* The largest entry read: a 16384 x 16384 BMP and some. */
 #define GRADE_ZIP_MAX_ENTRY ((zip_uint64_t)800 << 20)
 
-/* Whether an entry's name is an image's (and no resource fork of
- * macOS's). */
+/* Whether an entry's name is an image's (and no folder, nor a resource
+ * fork of macOS's). */
 static int grade_zip_wanted(const char *name)
 {
 	size_t len = strlen(name);
 
 	if (len == 0 || name[len - 1] == '/' || strstr(name, "__MACOSX/"))
 		return 0;
-	return image_format_from_path(name) != RT_FORMAT_UNKNOWN ||
-	       (len > 4 && (strcmp(name + len - 4, ".jpg") == 0 || strcmp(name + len - 4, ".JPG") == 0)) ||
-	       (len > 5 && (strcmp(name + len - 5, ".jpeg") == 0));
+	return grade_is_image_name(name);
 }
 
 int grade_zip_read(const char *path, struct grade_inputs *out, struct diag *d)

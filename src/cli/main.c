@@ -18,18 +18,6 @@
 #include "cli/tool.h"
 #include "whitted/scene.h"
 
-volatile sig_atomic_t cli_cancelled;
-
-static void on_signal(int sig)
-{
-	cli_cancelled = sig;
-}
-
-void cli_set_signals(void)
-{
-	rt_on_stop_signals(on_signal);
-}
-
 /* The commands that render (all but merge) say when WHITTED_ISA is not
  * one the walks understand (they then ignore it). */
 static void warn_walk_cap(void)
@@ -79,8 +67,9 @@ static bool looks_like_command(const char *w)
  * go on and read it as the scene. */
 static int not_a_command(const char *w)
 {
-	static const char *const words[] = { "merge", "compare", "grade", "explain", "help" };
+	const char *words[N_SUBCOMMANDS];
 	const char *hit;
+	size_t i;
 
 	if (!looks_like_command(w))
 		return 0;
@@ -94,7 +83,11 @@ static int not_a_command(const char *w)
 	if (strcmp(w, "render") == 0)
 		return tool_usage_error("'render' is not a subcommand (and no file): whitted renders "
 					"without one, whitted [OPTIONS] SCENE");
-	hit = cli_suggest(w, words, sizeof(words) / sizeof(words[0]));
+	/* The subcommands' words, then "help" in the place of the render's. */
+	for (i = 1; i < N_SUBCOMMANDS; i++)
+		words[i - 1] = subcommands[i].word;
+	words[N_SUBCOMMANDS - 1] = "help";
+	hit = cli_suggest(w, words, N_SUBCOMMANDS);
 	if (hit)
 		return tool_usage_error("'%s' is not a subcommand (and no file); did you mean "
 					"'whitted %s'?", w, hit);

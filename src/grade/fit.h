@@ -40,13 +40,11 @@ void fit_colour(double r, double g, double b, float out[3]);
 /* A level: cells, each the mean of ss x ss pixels of the full image (the
  * submission's pixels there, and the candidate's colours of the rays
  * through those very pixels, so that the true camera gives the target
- * exactly), laid out w x h and blurred by a Gaussian of sigma cells; or,
- * with h == 0, a list of w single pixels, not blurred. */
+ * exactly), laid out w x h and blurred by a Gaussian of sigma cells. */
 struct fit_level {
 	int w, h, ss;
 	int n_cells, n_samples;
 	int32_t *sx, *sy;		/* the samples' pixels, ss * ss a cell */
-	float *sw;			/* the samples' weights in their cell (NULL: equal) */
 	float *target;			/* 3 a cell, 0..255, blurred */
 	float *weight;			/* a cell's weight (NULL: 1) */
 	double sigma;
@@ -56,17 +54,9 @@ struct fit_level {
 	const struct grade_variant *variant;
 };
 
-/* A level of sub (the submission) in cells of w x h, or of the pixels
- * listed (h 0, pixels[i] = y * width + x). */
+/* A level of sub (the submission) in cells of w x h. */
 int fit_level_grid(struct fit_level *l, const struct image *sub, int w, int h, int ss,
 		   double sigma, struct diag *d);
-int fit_level_pixels(struct fit_level *l, const struct image *sub, const uint32_t *pixels,
-		     int n, struct diag *d);
-/* A level of about n patches of 5 x 5 pixels (spaced sigma apart, at
- * least 1), each the Gaussian-weighted mean of its pixels: one a block of
- * the image, at the block's strongest edge in sub. */
-int fit_level_patches(struct fit_level *l, const struct image *sub, int n, double sigma,
-		      struct diag *d);
 void fit_level_free(struct fit_level *l);
 
 /* What a thread needs to score candidates on a level. */

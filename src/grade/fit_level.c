@@ -232,116 +232,12 @@ int fit_level_grid(struct fit_level *l, const struct image *sub, int w, int h, i
 	return fit_level_weigh(l, sub, d);
 }
 
-int fit_level_pixels(struct fit_level *l, const struct image *sub, const uint32_t *pixels,
-		     int n, struct diag *d)
-{
-	int k, rc;
-
-	memset(l, 0, sizeof(*l));
-	l->w = n;
-	l->ss = 1;
-	if ((rc = fit_level_alloc(l, n, 1, d)) < 0)
-		return rc;
-	for (k = 0; k < n; k++) {
-		const uint8_t *q = sub->pixels + 3 * (size_t)pixels[k];
-		l->sx[k] = (int32_t)(pixels[k] % (uint32_t)sub->width);
-		l->sy[k] = (int32_t)(pixels[k] / (uint32_t)sub->width);
-		fit_colour(q[0], q[1], q[2], l->target + 3 * k);
-	}
-	return 0;
-}
-
-/* The squared gradient of sub's grey at (x, y), central differences. */
-static double fit_edge(const struct image *sub, int x, int y)
-{
-	const uint8_t *p = sub->pixels;
-	size_t w = (size_t)sub->width;
-	int xa = x > 0 ? x - 1 : x, xb = x + 1 < sub->width ? x + 1 : x;
-	int ya = y > 0 ? y - 1 : y, yb = y + 1 < sub->height ? y + 1 : y;
-	double gx = 0.0, gy = 0.0;
-	int c;
-
-	for (c = 0; c < 3; c++) {
-		gx += (double)p[3 * ((size_t)y * w + (size_t)xb) + c] - p[3 * ((size_t)y * w + (size_t)xa) + c];
-		gy += (double)p[3 * ((size_t)yb * w + (size_t)x) + c] - p[3 * ((size_t)ya * w + (size_t)x) + c];
-	}
-	return gx * gx + gy * gy;
-}
-
-#define FIT_PATCH 5
-
-int fit_level_patches(struct fit_level *l, const struct image *sub, int n, double sigma,
-		      struct diag *d)
-{
-	const int half = FIT_PATCH / 2, per = FIT_PATCH * FIT_PATCH;
-	int step = sigma < 1.0 ? 1 : (int)lround(sigma), block, bx, by, k = 0, cell = 0, rc, i, j, c;
-	int nbx, nby;
-	double wsum = 0.0, wk[FIT_PATCH * FIT_PATCH];
-
-	memset(l, 0, sizeof(*l));
-	block = (int)ceil(sqrt((double)sub->width * sub->height / (n > 0 ? n : 1)));
-	block = block < 1 ? 1 : block;
-	nbx = (sub->width + block - 1) / block;
-	nby = (sub->height + block - 1) / block;
-	l->ss = FIT_PATCH;
-	l->w = nbx * nby;
-	if ((rc = fit_level_alloc(l, nbx * nby, FIT_PATCH, d)) < 0)
-		return rc;
-	if (!(l->sw = rt_reallocarray(NULL, (size_t)l->n_samples, sizeof(*l->sw)))) {
-		fit_level_free(l);
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the camera fit");
-	}
-	for (j = -half; j <= half; j++)
-		for (i = -half; i <= half; i++) {
-			double dd = (double)(i * i + j * j) * step * step;
-			wk[(j + half) * FIT_PATCH + i + half] = exp(-dd / (2.0 * sigma * sigma));
-			wsum += wk[(j + half) * FIT_PATCH + i + half];
-		}
-	for (by = 0; by < nby; by++)
-		for (bx = 0; bx < nbx; bx++) {
-			int x0 = bx * block, y0 = by * block, x, y, best_x = x0, best_y = y0;
-			double best = -1.0, s[3] = { 0.0, 0.0, 0.0 };
-			for (y = y0; y < y0 + block && y < sub->height; y++)
-				for (x = x0; x < x0 + block && x < sub->width; x++) {
-					double e = fit_edge(sub, x, y);
-					if (e > best) {
-						best = e;
-						best_x = x;
-						best_y = y;
-					}
-				}
-			for (j = -half; j <= half; j++)
-				for (i = -half; i <= half; i++, k++) {
-					int px = best_x + i * step, py = best_y + j * step;
-					const uint8_t *q;
-					px = px < 0 ? 0 : px >= sub->width ? sub->width - 1 : px;
-					py = py < 0 ? 0 : py >= sub->height ? sub->height - 1 : py;
-					q = sub->pixels + 3 * ((size_t)py * (size_t)sub->width + (size_t)px);
-					l->sx[k] = px;
-					l->sy[k] = py;
-					l->sw[k] = (float)(wk[(j + half) * FIT_PATCH + i + half] / wsum);
-					{
-						float f[3];
-						fit_colour(q[0], q[1], q[2], f);
-						for (c = 0; c < 3; c++)
-							s[c] += l->sw[k] * f[c];
-					}
-				}
-			for (c = 0; c < 3; c++)
-				l->target[3 * cell + c] = (float)s[c];
-			cell++;
-		}
-	(void)per;
-	return 0;
-}
-
 void fit_level_free(struct fit_level *l)
 {
 	rt_free(l->sx);
 	rt_free(l->sy);
 	rt_free(l->target);
 	rt_free(l->weight);
-	rt_free(l->sw);
 	memset(l, 0, sizeof(*l));
 }
 
@@ -461,7 +357,7 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 		for (i = 0; i < m; i++) {
 			float *c = s->cells + 3 * ((k + i) / per);
 			struct color q = color_clamp(col[i]);
-			double wt = l->sw ? l->sw[k + i] : 1.0 / per;
+			double wt = 1.0 / per;
 			float f[3];
 			fit_colour(255.0 * q.r, 255.0 * q.g, 255.0 * q.b, f);
 			c[0] += (float)(f[0] * wt);
@@ -469,8 +365,7 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 			c[2] += (float)(f[2] * wt);
 		}
 	}
-	if (l->h > 0)
-		fit_blur(s->cells, s->tmp, l->w, l->h, l->sigma);
+	fit_blur(s->cells, s->tmp, l->w, l->h, l->sigma);
 	if (s->points)
 		for (k = 0; k < l->n_cells; k++) {
 			int mid = k * per + per / 2;

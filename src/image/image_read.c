@@ -18,19 +18,6 @@
 /* A submission larger than this is not an image of the course. */
 #define IMAGE_READ_MAX_BYTES ((size_t)1 << 28)
 
-int image_read_over_limit(const char *name, unsigned long long w, unsigned long long h,
-			  unsigned long long max_pixels, struct diag *d)
-{
-	unsigned long long side = (unsigned long long)sqrt((double)max_pixels);
-
-	if (side * side == max_pixels)
-		return diag_set(d, RT_E_RANGE, name, 0, 0,
-				"%llux%llu is over the limit of %llu pixels (%llux%llu)", w, h, max_pixels,
-				side, side);
-	return diag_set(d, RT_E_RANGE, name, 0, 0, "%llux%llu is over the limit of %llu pixels", w,
-			h, max_pixels);
-}
-
 static uint32_t le32(const unsigned char *p)
 {
 	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;

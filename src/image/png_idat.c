@@ -14,12 +14,9 @@
  * compressed when the file is written.  At 1536x1536 zlib's level 1 so
  * took a quarter of the time of libpng's fastest setting (no filter, zlib
  * level 3, one thread) for a file about as small; ISA-L takes a quarter
- * of zlib's.  libpng then writes the chunks; its errors come back through
- * a setjmp confined to png_idat_guard, as in dist/tile_png.c. */
+ * of zlib's.  libpng then writes the chunks (png_write.c). */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
 #include <pthread.h>
-#include <setjmp.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
@@ -36,8 +33,6 @@
 #include "image/png_idat.h"
 
 #define PNG_IDAT_MAX_THREADS 8
-/* libpng's own IDAT size for the simplified writer. */
-#define PNG_IDAT_CHUNK 8192
 
 struct png_idat_strip {
 	unsigned char *out;
@@ -283,7 +278,7 @@ static const unsigned char png_idat_header[2] = { 0x78, 0x01 };
 /* The strips compressed (those no band_done call compressed, here), and
  * the stream's trailer: the Adler-32 of all rows, big-endian, from the
  * strips'. */
-static int png_idat_strips_seal(struct png_idat_strips *st, struct diag *d)
+int png_idat_strips_seal(struct png_idat_strips *st, struct diag *d)
 {
 	size_t line = (size_t)st->img->width * 3 + 1;
 	uLong adler = 1;
@@ -306,9 +301,19 @@ static int png_idat_strips_seal(struct png_idat_strips *st, struct diag *d)
 	return 0;
 }
 
+int png_idat_piece_count(const struct png_idat_strips *st)
+{
+	return st->n_strips + 2;
+}
+
+const struct image *png_idat_strips_image(const struct png_idat_strips *st)
+{
+	return st->img;
+}
+
 /* Piece k of the sealed stream, k in [0, n_strips + 2): the header, the
  * strips in order, the trailer. */
-static const unsigned char *png_idat_piece(const struct png_idat_strips *st, int k, size_t *len)
+const unsigned char *png_idat_piece(const struct png_idat_strips *st, int k, size_t *len)
 {
 	if (k == 0) {
 		*len = sizeof(png_idat_header);
@@ -323,7 +328,7 @@ static const unsigned char *png_idat_piece(const struct png_idat_strips *st, int
 }
 
 /* The sealed stream's length: its pieces'. */
-static size_t png_idat_stream_len(const struct png_idat_strips *st)
+size_t png_idat_stream_len(const struct png_idat_strips *st)
 {
 	size_t total = 0, len;
 	int k;
@@ -384,138 +389,4 @@ void png_idat_free(struct png_idat *z)
 	rt_free(z->data);
 	z->data = NULL;
 	z->len = 0;
-}
-
-/* The libpng side: one write structure and the message of its error. */
-struct png_idat_writer {
-	png_structp png;
-	png_infop info;
-	const struct image *img;
-	const struct png_idat_strips *st;	/* sealed */
-	FILE *f;
-	png_idat_extra_fn *extra;
-	void *ctx;
-	char msg[200];
-};
-
-static void png_idat_error(png_structp png, png_const_charp msg)
-{
-	struct png_idat_writer *w = png_get_error_ptr(png);
-
-	snprintf(w->msg, sizeof(w->msg), "%s", msg);
-	png_longjmp(png, 1);
-}
-
-static void png_idat_warning(png_structp png, png_const_charp msg)
-{
-	(void)png;
-	(void)msg;
-}
-
-/* The sealed stream in IDAT chunks of PNG_IDAT_CHUNK bytes (the last
- * shorter), straight from its pieces: joining them first cost a copy and
- * the faults of a buffer the size of the file. */
-static void png_idat_chunks(struct png_idat_writer *w)
-{
-	static const png_byte idat[5] = "IDAT";
-	size_t total = png_idat_stream_len(w->st), pos, len, used = 0;
-	const unsigned char *p;
-	int k = 0, n = w->st->n_strips + 2;
-
-	p = png_idat_piece(w->st, k, &len);
-	for (pos = 0; pos < total; pos += PNG_IDAT_CHUNK) {
-		size_t left = total - pos < PNG_IDAT_CHUNK ? total - pos : PNG_IDAT_CHUNK;
-
-		png_write_chunk_start(w->png, idat, (png_uint_32)left);
-		while (left > 0) {
-			size_t take = len - used < left ? len - used : left;
-
-			png_write_chunk_data(w->png, p + used, take);
-			used += take;
-			left -= take;
-			if (used == len && k + 1 < n) {
-				p = png_idat_piece(w->st, ++k, &len);
-				used = 0;
-			}
-		}
-		png_write_chunk_end(w->png);
-	}
-}
-
-static void png_idat_steps(struct png_idat_writer *w)
-{
-	static const png_byte iend[5] = "IEND";
-
-	png_init_io(w->png, w->f);
-	png_set_IHDR(w->png, w->info, (png_uint_32)w->img->width, (png_uint_32)w->img->height, 8,
-		     PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-		     PNG_FILTER_TYPE_DEFAULT);
-	/* As libpng's simplified writer marks every 8-bit image. */
-	png_set_sRGB(w->png, w->info, PNG_sRGB_INTENT_PERCEPTUAL);
-	if (w->extra)
-		w->extra(w->png, w->info, w->ctx);
-	png_write_info(w->png, w->info);
-	png_idat_chunks(w);
-	/* png_write_end would refuse: it counts only the IDATs it wrote
-	 * itself. */
-	png_write_chunk(w->png, iend, NULL, 0);
-}
-
-/* Runs the steps; false when libpng failed in them (w->msg says why).
- * Everything the steps change lives in *w, so nothing needs to be
- * volatile. */
-static bool png_idat_guard(struct png_idat_writer *w)
-{
-	if (setjmp(png_jmpbuf(w->png)))
-		return false;
-	png_idat_steps(w);
-	return true;
-}
-
-int png_idat_strips_write(struct png_idat_strips *st, FILE *f, png_idat_extra_fn *extra,
-			  void *ctx, struct diag *d)
-{
-	struct png_idat_writer w;
-	bool ok;
-	int rc;
-
-	if ((rc = png_idat_strips_seal(st, d)) < 0)
-		return rc;
-	memset(&w, 0, sizeof(w));
-	w.img = st->img;
-	w.st = st;
-	w.f = f;
-	w.extra = extra;
-	w.ctx = ctx;
-	w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, png_idat_error, png_idat_warning);
-	if (w.png)
-		w.info = png_create_info_struct(w.png);
-	if (!w.info) {
-		png_destroy_write_struct(&w.png, NULL);
-		return diag_fail(d, RT_E_NOMEM, "out of memory for a PNG");
-	}
-	errno = 0;
-	ok = png_idat_guard(&w);
-	png_destroy_write_struct(&w.png, &w.info);
-	/* The caller flushes (image_write_file): a small file fails there. */
-	if (ok && !ferror(f))
-		return 0;
-	/* libpng says only "Write Error" when the stream fails: the reason
-	 * (a full disk, a file-size limit) is in errno. */
-	if (ferror(f) && errno != 0)
-		return diag_fail(d, RT_E_IO, "cannot write PNG: %s", strerror(errno));
-	return diag_fail(d, RT_E_IO, "cannot write PNG: %s", ok ? "write error" : w.msg);
-}
-
-int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
-			struct diag *d)
-{
-	struct png_idat_strips *st;
-	int rc;
-
-	if ((rc = png_idat_strips_open(img, 1, &st, d)) < 0)
-		return rc;
-	rc = png_idat_strips_write(st, f, extra, ctx, d);
-	png_idat_strips_free(st);
-	return rc;
 }

@@ -41,6 +41,16 @@ void png_idat_strips_band_done(struct png_idat_strips *st, int band, int thread)
 int png_idat_strips_finish(struct png_idat_strips *st, struct png_idat *out, struct diag *d);
 void png_idat_strips_free(struct png_idat_strips *st);
 
+/* For the writer (png_write.c): the strips compressed (those no
+ * band_done call compressed, here) and the stream's trailer made; then
+ * the stream's pieces, k in [0, png_idat_piece_count): the zlib header,
+ * the strips in order, the trailer; their total length; and the image. */
+int png_idat_strips_seal(struct png_idat_strips *st, struct diag *d);
+int png_idat_piece_count(const struct png_idat_strips *st);
+const unsigned char *png_idat_piece(const struct png_idat_strips *st, int k, size_t *len);
+size_t png_idat_stream_len(const struct png_idat_strips *st);
+const struct image *png_idat_strips_image(const struct png_idat_strips *st);
+
 /* Called after png_set_IHDR and before png_write_info, to add chunks;
  * it runs inside the writer's error guard and may call libpng freely. */
 typedef void png_idat_extra_fn(png_structp png, png_infop info, void *ctx);

@@ -10,6 +10,7 @@
 #include "accel/accel.h"
 #include "render/render_packet.h"
 #include "render/samples.h"
+#include "render/shade_math.h"
 #include "scene/scene_impl.h"
 
 /* The samples of a row of pixels, in their order (pixel by pixel, each
@@ -41,7 +42,7 @@ static void samples_row_packets(const struct render_job *job, int x0, int x1, in
 			m = 0;
 		}
 	for (x = x0; x < x1; x++)
-		render_color_to_rgb8(color_scale(sum[x - x0], inv_nn), row + (size_t)(x - x0) * 3);
+		render_rgb8(color_scale(sum[x - x0], inv_nn), row + (size_t)(x - x0) * 3);
 }
 
 /* The mean of pixel (x, y)'s samples, one round of its tree. */
@@ -103,7 +104,7 @@ void render_block_samples(const struct render_job *job, struct image *img, int x
 			}
 			if (tree->counts)
 				tree->counts->primary += (uint64_t)nn;
-			render_color_to_rgb8(mean, row + (size_t)(x - job->x0) * 3);
+			render_rgb8(mean, row + (size_t)(x - job->x0) * 3);
 		}
 	}
 }

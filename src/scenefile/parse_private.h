@@ -1,5 +1,8 @@
-/* The steps that parse.c shares with parse_parts.c (which reads the
- * objects of a big file in several threads); private to the two. */
+/* The steps the parse files share, private to src/scenefile.  From the
+ * bottom: one object (parse_shape.c), a big file's objects in several
+ * threads (parse_parts.c), the sections every grammar has
+ * (parse_sections.c), the grammars (parse_classic.c, parse_nearfar.c) and
+ * the choice between them (parse.c). */
 #ifndef RT_PARSE_PRIVATE_H
 #define RT_PARSE_PRIVATE_H
 

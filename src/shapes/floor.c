@@ -19,24 +19,13 @@
 #include "base/platform.h"
 #include "whitted/diag.h"
 #include "whitted/image.h"
-#include "whitted/mesh.h"
-#include "whitted/pov.h"
+#include "shapes/floor_impl.h"
 #include "shapes/shapes.h"
 #include "shapes/solve_packet.h"
 #include "whitted/shape.h"
 
 extern const struct shape_ops floor_ops;
 static const struct shape_ops floor_infinite_ops;
-
-struct floor {
-	struct shape base;
-	double half, cell;
-	/* The white cells' and the black cells' textures: no pixels (and a
-	 * NULL path) for the plain colour. */
-	struct image tex[2];
-	char *tex_path[2];		/* absolute, for the POV-Ray export */
-	enum image_format tex_format[2];
-};
 
 static bool floor_intersect(const struct shape *s, const struct ray *r,
 			    double t_min, double *t_max)
@@ -211,86 +200,6 @@ static bool floor_bounds(const struct shape *s, struct aabb *out)
 	return true;
 }
 
-/* A cell's texture: the material's, or with a texture k (0 white, 1 black)
- * an image_map over each unit square of pattern space (so each cell, once
- * the checker is scaled), nearest texel (no interpolate), read linearly
- * (gamma 1, as whitted takes the bytes), its finish the cell's: the
- * texel is the pigment of the ambient and diffuse terms and the phong
- * highlight stays white (the black cell has none). */
-static void floor_write_cell(const struct shape *s, int k, const struct material *m,
-			     const struct pov_options *plain, FILE *out)
-{
-	const struct floor *fl = (const struct floor *)s;
-	const char *p, *name = plain->floor_texture[k];
-
-	if (!fl->tex_path[k]) {
-		pov_write_texture(out, m, plain);
-		return;
-	}
-	if (name)
-		fputs("texture { pigment { image_map { png \"", out);
-	else
-		fprintf(out, "texture { pigment { image_map { %s \"",
-			fl->tex_format[k] == RT_FORMAT_BMP ? "bmp" :
-			fl->tex_format[k] == RT_FORMAT_PPM ? "ppm" : "png");
-	for (p = name ? name : fl->tex_path[k]; *p; p++) {
-		if (*p == '"' || *p == '\\')
-			fputc('\\', out);
-		fputc(*p, out);
-	}
-	fputs("\" gamma 1.0 } } finish { ambient ", out);
-	pov_write_number(out, m->ka);
-	pov_write_finish_terms(out, m);
-}
-
-/* The texture of a checkerboard whose cell (0, 0) starts at (x0, y0).
- * POV-Ray's checker is colour 1 where floor(x) + floor(y) + floor(z) is
- * even, in pattern space.  Scaling by the cell and translating by (x0, y0)
- * gives our cell indices; translating z by -cell/2 puts the plane z = 0 at
- * pattern z = 0.5, mid-cell, where floor(z) = 0 keeps the parity. */
-static void floor_write_checker(const struct shape *s, double cell, double x0, double y0,
-				const struct pov_options *opt, FILE *out)
-{
-	/* The cell colour varies, so the floor cannot use the exact mode's
-	 * tinted light group: a plain texture is exact here, since the white
-	 * cell's highlight is white and the black cell has none. */
-	struct pov_options plain = { RT_POV_FINISH_PLAIN, false, { NULL, NULL } };
-	struct material black = s->mat;
-
-	plain.floor_texture[0] = opt->floor_texture[0];
-	plain.floor_texture[1] = opt->floor_texture[1];
-	black.color = color_make(0.0, 0.0, 0.0);
-	black.ks = 0.0;
-	fputs("\n  texture { checker\n    ", out);
-	floor_write_cell(s, 0, &s->mat, &plain, out);
-	fputs("\n    ", out);
-	floor_write_cell(s, 1, &black, &plain, out);
-	fputs("\n    scale ", out);
-	pov_write_number(out, cell);
-	fputs(" translate ", out);
-	pov_write_vector(out, x0, y0, -0.5 * cell);
-	fputs("\n  }\n}\n", out);
-}
-
-static int floor_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)
-{
-	const struct floor *fl = (const struct floor *)s;
-	double h = fl->half;
-
-	fputs("polygon { 5, ", out);
-	pov_write_vector(out, -h, -h, 0.0);
-	fputs(", ", out);
-	pov_write_vector(out, h, -h, 0.0);
-	fputs(", ", out);
-	pov_write_vector(out, h, h, 0.0);
-	fputs(", ", out);
-	pov_write_vector(out, -h, h, 0.0);
-	fputs(", ", out);
-	pov_write_vector(out, -h, -h, 0.0);
-	floor_write_checker(s, fl->cell, -h, -h, opt, out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
 static void floor_destroy(struct shape *s)
 {
 	struct floor *fl = (struct floor *)s;
@@ -301,92 +210,6 @@ static void floor_destroy(struct shape *s)
 		rt_free(fl->tex_path[k]);
 	}
 	rt_free(s);
-}
-
-/* The quad p[0..3] (in order around it) as two triangles split along its
- * 1-3 diagonal, as OpenGL's Mesa splits a quad: the viewer's Gouraud
- * shading is then what it was when the floor was drawn as quads. */
-static int floor_add_quad(struct mesh *out, const struct vec3 p[4], const struct vec3 n[3],
-			  const struct mesh_uv uv[4])
-{
-	const struct vec3 p1[3] = { p[0], p[1], p[3] };
-	const struct mesh_uv uv1[3] = { uv[0], uv[1], uv[3] };
-	const struct vec3 p2[3] = { p[1], p[2], p[3] };
-	const struct mesh_uv uv2[3] = { uv[1], uv[2], uv[3] };
-	int rc;
-
-	if ((rc = mesh_add_triangle_uv(out, p1, n, uv1)) < 0)
-		return rc;
-	return mesh_add_triangle_uv(out, p2, n, uv2);
-}
-
-/* The viewer's texels along a cell: 1 for plain cells, else the larger
- * side of the textures, at most 16 (the mesh's texture holds two cells
- * by two), which shows textures up to 16 texels wide exactly and larger
- * ones sampled. */
-static int floor_texels_per_cell(const struct shape *s)
-{
-	const struct floor *fl = (const struct floor *)s;
-	int n = 1, k;
-
-	for (k = 0; k < 2; k++) {
-		if (fl->tex[k].width > n)
-			n = fl->tex[k].width;
-		if (fl->tex[k].height > n)
-			n = fl->tex[k].height;
-	}
-	return n > 16 ? 16 : n;
-}
-
-/* A grid of 3 * segments quads a side over the area's x and y (a viewer
- * that lights per vertex needs vertices under the highlights) under a
- * 2 x 2 texture of the cells' colours, repeated every two cells: u and v
- * count cell pairs from the corner (cx, cy) of a cell (0, 0) of even
- * parity, as the cell index does, so the texture's cells fall on the
- * floor's whatever their number. */
-static int floor_grid(const struct shape *s, const struct mesh_options *opt, struct aabb area,
-		      double cx, double cy, double cell, struct mesh *out)
-{
-	const struct vec3 up = vec3_make(0.0, 0.0, 1.0), n[3] = { up, up, up };
-	const int quads = 3 * opt->segments;
-	const double x0 = area.min.x, y0 = area.min.y, period = 2.0 * cell;
-	const double side_x = (area.max.x - x0) / quads, side_y = (area.max.y - y0) / quads;
-	const int per_cell = floor_texels_per_cell(s), side = 2 * per_cell;
-	struct color texels[RT_MESH_TEXELS_MAX];
-	int i, j, k, rc;
-
-	for (k = 0; k < side * side; k++)
-		texels[k] = shape_color_at(s, vec3_make(cx + (k % side + 0.5) * cell / per_cell,
-							cy + (k / side + 0.5) * cell / per_cell, 0.0));
-	if ((rc = mesh_set_texture(out, side, side, texels)) < 0)
-		return rc;
-	for (j = 0; j < quads; j++) {
-		for (i = 0; i < quads; i++) {
-			static const int corner[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-			struct vec3 p[4];
-			struct mesh_uv uv[4];
-			for (k = 0; k < 4; k++) {
-				p[k] = vec3_make(x0 + (i + corner[k][0]) * side_x,
-						 y0 + (j + corner[k][1]) * side_y, 0.0);
-				uv[k].u = (p[k].x - cx) / period;
-				uv[k].v = (p[k].y - cy) / period;
-			}
-			if ((rc = floor_add_quad(out, p, n, uv)) < 0)
-				return rc;
-		}
-	}
-	return 0;
-}
-
-/* The whole square, its cell (0, 0) at the corner (-w/2, -w/2). */
-static int floor_tessellate(const struct shape *s, const struct mesh_options *opt,
-			    struct mesh *out)
-{
-	const struct floor *fl = (const struct floor *)s;
-	const double h = fl->half;
-	struct aabb area = { { -h, -h, 0.0 }, { h, h, 0.0 } };
-
-	return floor_grid(s, opt, area, -h, -h, fl->cell, out);
 }
 
 /* Not in the registry: the floor is implicit, never read from a file. */
@@ -444,33 +267,6 @@ static bool floor_infinite_bounds(const struct shape *s, struct aabb *out)
 	out->min.z = 0.0;
 	out->max.z = 0.0;
 	return false;
-}
-
-/* The plane z = 0 with cell (0, 0) at the origin. */
-static int floor_infinite_export_pov(const struct shape *s, FILE *out,
-				     const struct pov_options *opt)
-{
-	const struct floor *fl = (const struct floor *)s;
-
-	fputs("plane { z, 0", out);
-	floor_write_checker(s, fl->cell, 0.0, 0.0, opt, out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
-/* The plane over the x and y extent of the region around the scene, at
- * z = 0 even when the region lies above or below it (the floor under a
- * scene of objects in the air is still drawn). */
-static int floor_infinite_tessellate(const struct shape *s, const struct mesh_options *opt,
-				     struct mesh *out)
-{
-	const struct floor *fl = (const struct floor *)s;
-	struct aabb area = opt->around;
-
-	area.min.z = area.max.z = 0.0;
-	if (!(area.min.x < area.max.x && area.min.y < area.max.y) ||
-	    !vec3_is_finite(area.min) || !vec3_is_finite(area.max))
-		return 0;
-	return floor_grid(s, opt, area, 0.0, 0.0, fl->cell, out);
 }
 
 static const struct shape_ops floor_infinite_ops = {

@@ -4,9 +4,11 @@
 "whitted/x.h" to the module whose folder holds x.c), and the link-level
 references that #includes do not show (a function defined in one folder and
 called from another, read from the objects with nm).  Fails on a cycle
-between folders, on a library module that includes program code (src/cli)
-or getopt, and on an installed header that includes anything private.
-Prints the graph.  Usage: modules.py [BUILD_DIR]"""
+between folders, on a cycle between the files of a folder (file a.c uses
+b.c when it calls a function or reads data b.c defines), on a C file of
+more than 500 lines, on a library module that includes program code
+(src/cli) or getopt, and on an installed header that includes anything
+private.  Prints the graph.  Usage: modules.py [BUILD_DIR]"""
 import os, re, subprocess, sys
 
 root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -23,8 +25,10 @@ include_re = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]', re.M)
 edges = {m: set() for m in modules}
 why = {}
 
-# Link-level: symbols each module's objects define and use.
+# Link-level: symbols each module's objects define and use (and, file by
+# file, each object's).
 defined, used = {}, {m: set() for m in modules}
+file_defined, file_used = {}, {}
 for m in modules:
     objdir = os.path.join(build, "src", m)
     if not os.path.isdir(objdir):
@@ -33,14 +37,17 @@ for m in modules:
     for f in sorted(os.listdir(objdir)):
         if not f.endswith(".o"):
             continue
+        node = "%s/%s" % (m, f[:-2])
         out = subprocess.run(["nm", os.path.join(objdir, f)], capture_output=True,
                              text=True, check=True).stdout
         for line in out.splitlines():
             parts = line.split()
             if len(parts) == 3 and parts[1] in "TDBR":
                 defined[parts[2]] = m
+                file_defined[parts[2]] = node
             elif len(parts) == 2 and parts[0] == "U":
                 used[m].add(parts[1])
+                file_used.setdefault(node, set()).add(parts[1])
 for m in modules:
     for sym in used[m]:
         d = defined.get(sym)
@@ -83,6 +90,49 @@ for m in modules:
     if m not in state:
         visit(m)
 
+# Cycles between the files of a folder: a.c uses b.c when it calls what
+# b.c defines (read from the objects: a header often declares the
+# functions of several files, so an #include says less).
+file_edges, file_why = {}, {}
+for node, syms in file_used.items():
+    for sym in sorted(syms):
+        d = file_defined.get(sym)
+        if d and d != node and d.split("/")[0] == node.split("/")[0]:
+            file_edges.setdefault(node, set()).add(d)
+            file_why.setdefault((node, d), "calls %s" % sym)
+fstate, fstack, file_cycles = {}, [], set()
+def fvisit(n):
+    fstate[n] = 1
+    fstack.append(n)
+    for k in sorted(file_edges.get(n, ())):
+        if fstate.get(k) == 1:
+            cyc = fstack[fstack.index(k):] + [k]
+            key = frozenset(cyc)
+            if key not in file_cycles:
+                file_cycles.add(key)
+                failures.append("cycle between files: " + " -> ".join(cyc) + " (" + "; ".join(
+                    "%s %s" % (a, file_why[(a, b)]) for a, b in zip(cyc, cyc[1:])) + ")")
+        elif k not in fstate:
+            fvisit(k)
+    fstack.pop()
+    fstate[n] = 2
+for n in sorted(set(file_edges) | {k for v in file_edges.values() for k in v}):
+    if n not in fstate:
+        fvisit(n)
+
+# Small files: no C source or header over 500 lines, the house's limit.
+MAX_LINES = 500
+for top in ("src", "include", "pov_export", "viewer", "plugins"):
+    for dirpath, _, names in os.walk(os.path.join(root, top)):
+        for name in sorted(names):
+            if name.endswith((".c", ".h")):
+                path = os.path.join(dirpath, name)
+                with open(path, encoding="utf-8") as fh:
+                    lines = sum(1 for _ in fh)
+                if lines > MAX_LINES:
+                    failures.append("%s has %d lines, over the house's %d" % (
+                        os.path.relpath(path, root), lines, MAX_LINES))
+
 # Installed headers include only the C library and each other.
 pubdir = os.path.join(root, "include", "whitted")
 public = set(os.listdir(pubdir))
@@ -107,7 +157,8 @@ for m in order:
     print("layout: %-10s uses %s" % (m, ", ".join(sorted(edges[m])) or "-"))
 for f in failures:
     print("layout: FAIL: " + f)
-# Four checks: no getopt in the library, no library module on src/cli, no
-# cycle, installed headers self-contained.
-print("layout: %d passed, %d failed, 0 skipped" % (0 if failures else 4, len(failures)))
+# Six checks: no getopt in the library, no library module on src/cli, no
+# cycle between folders, none between files, no file over 500 lines,
+# installed headers self-contained.
+print("layout: %d passed, %d failed, 0 skipped" % (0 if failures else 6, len(failures)))
 sys.exit(1 if failures else 0)

@@ -1,0 +1,97 @@
+/* What the check reads off the pictures themselves: how far one camera's
+ * view moves from another's (whether a found camera is another one), and
+ * whether a submission's floor is textured where the reference's is a
+ * plain checker. */
+#include <math.h>
+#include <stdbool.h>
+#include <stdlib.h>
+
+#include "cli/check.h"
+
+/* How far camera b shows what camera a shows at its pixels, in pixels:
+ * the hit points of a grid of a's primary rays (directions for the
+ * background) seen through b; the share CHECK_MOVED_QUANTILE of them
+ * move at most that far.  A half-pixel shift (rays through the pixels'
+ * corners) is no other camera. */
+#define CHECK_MOVED_GRID 24
+#define CHECK_MOVED_QUANTILE 0.5
+
+double check_displacement(const struct check_view *a, const struct check_view *b)
+{
+	double moves[CHECK_MOVED_GRID * CHECK_MOVED_GRID];
+	int n = 0, i, j, k;
+
+	for (j = 0; j < CHECK_MOVED_GRID; j++)
+		for (i = 0; i < CHECK_MOVED_GRID; i++) {
+			int px = (int)((i + 0.5) * a->camera.width / CHECK_MOVED_GRID);
+			int py = (int)((j + 0.5) * a->camera.height / CHECK_MOVED_GRID);
+			struct ray r = camera_ray(&a->camera, px, py);
+			struct vec3 d;
+			double t = INFINITY, zf, u, v;
+			if (grade_primary_hit(&a->job, &r, &t))
+				d = vec3_sub(vec3_add_scaled(r.origin, r.dir, t), b->camera.eye);
+			else
+				d = r.dir;
+			zf = vec3_dot(d, b->camera.forward);
+			if (!(zf > 0.0)) {
+				moves[n++] = INFINITY;
+				continue;
+			}
+			u = (vec3_dot(d, b->camera.right) / zf + b->camera.half_width) / b->camera.pixel_scale_x - 0.5;
+			v = (b->camera.half_height - vec3_dot(d, b->camera.up) / zf) / b->camera.pixel_scale - 0.5;
+			moves[n++] = hypot(u - px, v - py);
+		}
+	for (i = 1; i < n; i++)
+		for (k = i; k > 0 && moves[k - 1] > moves[k]; k--) {
+			double t = moves[k];
+			moves[k] = moves[k - 1];
+			moves[k - 1] = t;
+		}
+	return moves[(int)(CHECK_MOVED_QUANTILE * (n - 1))];
+}
+
+/* Whether the submission's floor is textured (the Jan 2023 bonus task:
+ * an image over each cell) where the reference's is a plain checker: over
+ * the floor's pixels inside a cell (the reference smooth around them), the
+ * submission's neighbours differ on average by far more than the
+ * reference's do. */
+#define CHECK_TEXTURE_MIN_PIXELS 2000
+#define CHECK_TEXTURE_DENSE 0.2
+
+static bool check_noisy(const struct image *img, size_t i, int w)
+{
+	const int step[4] = { 1, -1, w, -w };
+	int k, c;
+
+	for (k = 0; k < 4; k++)
+		for (c = 0; c < 3; c++)
+			if (abs((int)img->pixels[3 * i + c] - (int)img->pixels[3 * (size_t)((long)i + step[k]) + c]) > 8)
+				return true;
+	return false;
+}
+
+bool check_floor_textured(const struct image *ref, const struct image *sub, const int32_t *ids)
+{
+	const int w = ref->width, h = ref->height;
+	long n = 0, dense = 0;
+	int x, y, i, j;
+
+	/* Pixels of the floor inside a cell of the reference (it is smooth
+	 * around them): in a textured floor most lie in patches where nearly
+	 * every pixel differs from a neighbour; a plain checker's cells,
+	 * even seen from another camera, are flat but for the thin lines
+	 * of their edges. */
+	for (y = 2; y + 2 < h; y++)
+		for (x = 2; x + 2 < w; x++) {
+			size_t p = (size_t)y * (size_t)w + (size_t)x;
+			int noisy = 0;
+			if (ids[p] != GRADE_ID_FLOOR || check_noisy(ref, p, w))
+				continue;
+			n++;
+			for (j = -1; j <= 1; j++)
+				for (i = -1; i <= 1; i++)
+					noisy += check_noisy(sub, (size_t)((long)p + j * w + i), w);
+			dense += noisy >= 7;
+		}
+	return n >= CHECK_TEXTURE_MIN_PIXELS && (double)dense / (double)n > CHECK_TEXTURE_DENSE;
+}

@@ -1,0 +1,55 @@
+/* The camera fit's search, private to the fit's files: candidates scored
+ * in batches on the job's threads (fit_batch.c), the fine search by
+ * Gauss-Newton (fit_gn.c) and the floor's aliases (fit_alias.c), which
+ * fit.c's stages run. */
+#ifndef RT_GRADE_FIT_SEARCH_H
+#define RT_GRADE_FIT_SEARCH_H
+
+#include <stdbool.h>
+
+#include "grade/fit.h"
+
+#define FIT_MAX_THREADS 64
+
+/* A level's candidates scored on the job's threads, each with its own
+ * scratch; optionally each candidate's cells and points kept. */
+struct fit_batch {
+	const struct fit_level *level;
+	const struct grade_job *job;
+	const struct camera_params *base;
+	const double *xs;
+	double *fs;
+	float *cells_out;		/* NULL, or each point's cells, 3 n_cells a point */
+	double *points_out;		/* NULL, or each point's cells' points, 4 n_cells a point */
+	int n, next;
+	struct fit_scratch scratch[FIT_MAX_THREADS];
+	int next_thread;
+};
+
+int fit_batch_open(struct fit_batch *b, const struct fit_level *l, const struct grade_job *job,
+		   const struct camera_params *base, struct diag *d);
+/* The n points xs (FIT_DIM each) scored into fs (INFINITY: no camera). */
+void fit_batch_run(void *ctx, const double *xs, double *fs, int n);
+void fit_batch_close(struct fit_batch *b);
+
+/* The steps of the local moves for the Jacobians at a level of pixel_deg
+ * degrees a cell: about a third of a cell. */
+void fit_move_steps(const double *v, double pivot, double pixel_deg, double *h);
+/* Gauss-Newton with Levenberg-Marquardt's damping from x (moved to the
+ * result) on the batch's level, for at most iterations; *pivot_out gets
+ * the distance to the middle of what x sees.  Returns the score at x;
+ * *rc < 0 on failure (out of memory). */
+double fit_gn(struct fit_batch *b, double *x, double pixel_deg, double *pivot_out, int iterations,
+	      long *evals, struct diag *d, int *rc);
+
+/* x and its floor's aliases (as they are, and turned to keep the scene's
+ * middle in view) scored on the level: the best n_out into out and fout,
+ * x itself first; returns how many. */
+int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][FIT_DIM], double *fout,
+		      int n_out, long *evals);
+/* x's aliases within two cells, as they are (and, for a cause's floor,
+ * one cell along x or y); x moves to the best when it is better than *fx.
+ * True when it moved. */
+bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals);
+
+#endif
