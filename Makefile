@@ -83,10 +83,26 @@ LIB_MODULES := base syntax export shapes plugin accel scene render scenefile ima
 # The platform layer (src/base/platform.h): one file a system; the
 # Windows cross build (make windows) takes the other.
 PLATFORM_SRC ?= src/base/platform_posix.c
-LIB_SRC := $(filter-out src/base/platform_%.c,$(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))) \
+# The vector kernels: one source a module, written over base/lanes.h and
+# compiled once per set of instructions this build has (SIMD_SETS), each
+# object with its -m flags and -DRT_SIMD_KERNEL=SET (src/base/simd.h).  On
+# x86-64 the baseline (SSE2), AVX2 and AVX-512; elsewhere the baseline.
+# Not on 32-bit x86, whose baseline does its doubles in the x87 unit:
+# vector code beside it would round differently, so there every path is
+# the plain C one.
+KERNEL_SRC := src/render/render_kernels.c src/shapes/solve_kernels.c
+SIMD_SETS := base
+ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
+SIMD_SETS := base avx2 avx512
+ALL_CFLAGS += -DRT_SIMD_X86_KERNELS
+endif
+SIMD_FLAGS_avx2 := -mavx2
+SIMD_FLAGS_avx512 := -mavx512f
+KERNEL_OBJ = $(foreach s,$(SIMD_SETS),$(KERNEL_SRC:%.c=$(1)/%_$(s).o))
+LIB_SRC := $(filter-out src/base/platform_%.c $(KERNEL_SRC),$(foreach m,$(LIB_MODULES),$(wildcard src/$(m)/*.c))) \
 	$(PLATFORM_SRC)
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o)
-SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o)
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o) $(call KERNEL_OBJ,$(BUILD))
+SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o) $(call KERNEL_OBJ,$(BUILD)/san)
 
 # ---- the programs ---------------------------------------------------------
 # src/cli/tool.c and scene_opts.c are shared by the three programs: the
@@ -136,22 +152,23 @@ $(BUILD)/%.o: %.c
 $(BUILD)/san/%.o: %.c
 	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -O1 $(SAN) -c $< -o $@
+# A kernel source's object for each set (KERNEL_SRC).
+define SIMD_KERNEL_RULES
+$(BUILD)/%_$(1).o: %.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -c $$< -o $$@
+$(BUILD)/san/%_$(1).o: %.c
+	@mkdir -p $$(@D)
+	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -O1 $$(SAN) -c $$< -o $$@
+endef
+$(foreach s,$(SIMD_SETS),$(eval $(call SIMD_KERNEL_RULES,$(s))))
 
-# The hierarchy's AVX2 and AVX-512 walks and the packets' shape tests are
-# compiled for them on x86 (the rest of the program for the baseline) and
-# chosen at run time by what the processor has (src/accel/accel_build.c,
-# src/base/simd.c).  Not on 32-bit x86, whose baseline does its doubles in
-# the x87 unit: vector code beside it would round differently, so there
-# every path is the plain C one.
+# The hierarchy's AVX2 and AVX-512 walks are compiled for them on x86 (the
+# rest of the program for the baseline) and chosen at the build by what
+# the processor has (src/accel/accel_build.c, src/base/simd.c).
 ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
-%/accel/accel_walk_avx2.o %/shapes/solve_packet_avx2.o %/render/light_dirs_avx2.o \
-	%/render/shade_lanes_avx2.o %/render/hit_lanes_avx2.o \
-	%/render/camera_lanes_avx2.o: \
-	ALL_CFLAGS += -mavx2
-%/accel/accel_walk_avx512.o %/shapes/solve_packet_avx512.o %/render/light_dirs_avx512.o \
-	%/render/shade_lanes_avx512.o %/render/hit_lanes_avx512.o \
-	%/render/camera_lanes_avx512.o: \
-	ALL_CFLAGS += -mavx512f
+%/accel/accel_walk_avx2.o: ALL_CFLAGS += -mavx2
+%/accel/accel_walk_avx512.o: ALL_CFLAGS += -mavx512f
 # The AVX-512 walk's float box tests widen their answers with fused
 # multiply-adds (every processor with AVX-512 has them; base/simd.c asks).
 %/accel/accel_walk_avx512.o: ALL_CFLAGS += -mfma
@@ -300,7 +317,12 @@ $(WIN)/%.o: %.c $(THIRD)/.stamp
 	@mkdir -p $(@D)
 	$(WIN_CC) $(WIN_CFLAGS) -c $< -o $@
 WIN_THIRD_OBJ := $(THIRD_SRC:$(THIRD)/%.c=$(WIN)/third/%.o)
-WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
+# The kernels in the baseline's instructions alone (see the AVX note above).
+$(WIN)/%_base.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(WIN_CC) $(WIN_CFLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
+WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(KERNEL_SRC:%.c=$(WIN)/%_base.o) \
+	$(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
 $(WIN)/pov_export/%.o: WIN_CFLAGS += -Ipov_export
 $(WIN)/whitted.exe: $(WHITTED_SRC:%.c=$(WIN)/%.o) $(WIN_LIB_OBJ)
 	@echo "$(WIN_CC) -o $@ ... $(WIN_LIBS)"
@@ -341,13 +363,17 @@ $(WEB_OBJ_DIR)/third/%.o: $(THIRD)/%.c
 $(WEB_OBJ_DIR)/%.o: %.c $(THIRD)/.stamp
 	@mkdir -p $(@D)
 	$(EMCC) $(WEB_CFLAGS) -c $< -o $@
+# The kernels once, in WebAssembly's SIMD (the baseline's SSE2 turned).
+$(WEB_OBJ_DIR)/%_base.o: %.c $(THIRD)/.stamp
+	@mkdir -p $(@D)
+	$(EMCC) $(WEB_CFLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
 # Debian's emscripten runs its optimiser under node with Debian's acorn
 # (node-acorn, in /usr/share/nodejs), which a node from elsewhere does not
 # look for.
 $(WEB_OBJ_DIR)/whitted-wasm.js: export NODE_PATH := /usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
 # whitted's main is the page's whitted_main (web_api.c calls it).
 $(WEB_OBJ_DIR)/src/cli/main.o: WEB_CFLAGS += -Dmain=whitted_main -Wno-missing-prototypes
-$(WEB_OBJ_DIR)/whitted-wasm.js: $(WEB_SRC:%.c=$(WEB_OBJ_DIR)/%.o) \
+$(WEB_OBJ_DIR)/whitted-wasm.js: $(WEB_SRC:%.c=$(WEB_OBJ_DIR)/%.o) $(KERNEL_SRC:%.c=$(WEB_OBJ_DIR)/%_base.o) \
 	$(THIRD_SRC:$(THIRD)/%.c=$(WEB_OBJ_DIR)/third/%.o)
 	@echo "$(EMCC) -o $@ ... $(WEB_LDFLAGS)"
 	@$(EMCC) -o $@ $^ $(WEB_LDFLAGS)
@@ -458,18 +484,22 @@ FUZZ_FLAGS := -std=c99 -g -O1 -Iinclude -Isrc $(PNG_CFLAGS) -pthread \
 $(BUILD)/fuzz/%.o: %.c
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+$(BUILD)/fuzz/%_base.o: %.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
+FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(KERNEL_SRC:%.c=$(BUILD)/fuzz/%_base.o)
 $(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/harness.c tests/fuzz/harness.h \
-	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_LIB_OBJ)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_scene.c \
-		tests/fuzz/harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+		tests/fuzz/harness.c $(FUZZ_LIB_OBJ) $(LDLIBS)
 $(BUILD)/fuzz/fuzz_image: tests/fuzz/fuzz_image.c tests/fuzz/image_harness.c tests/fuzz/harness.h \
-	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_LIB_OBJ)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_image.c \
-		tests/fuzz/image_harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+		tests/fuzz/image_harness.c $(FUZZ_LIB_OBJ) $(LDLIBS)
 $(BUILD)/fuzz/fuzz_plugin: tests/fuzz/fuzz_plugin.c tests/fuzz/plugin_harness.c tests/fuzz/harness.h \
-	$(LIB_SRC:%.c=$(BUILD)/fuzz/%.o)
+	$(FUZZ_LIB_OBJ)
 	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -Itests/fuzz -o $@ tests/fuzz/fuzz_plugin.c \
-		tests/fuzz/plugin_harness.c $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(LDLIBS)
+		tests/fuzz/plugin_harness.c $(FUZZ_LIB_OBJ) $(LDLIBS)
 #   make fuzz-plugins  the same for the plugin loader's checks, on tests/fuzz/plugins
 fuzz-plugins: $(BUILD)/fuzz/fuzz_plugin
 	@mkdir -p $(BUILD)/fuzz/plugins $(BUILD)/fuzz/artifacts

@@ -157,5 +157,8 @@ const char *scene_hierarchy_packets(const struct scene *s);
 /* WHITTED_ISA's value when it is set to something other than sse2, avx2
  * or avx512 (and so caps nothing), for the programs to warn; else NULL. */
 const char *scene_walk_cap_unknown(void);
+/* Which set of instructions the vector kernels (packets, shading a lane a
+ * ray) use, for --stats: "avx512", "avx2", "sse2" or "portable". */
+const char *scene_kernels_isa(void);
 
 #endif

@@ -297,15 +297,8 @@ bool accel_packets_wanted(const struct accel *a)
 
 static const char *walk_isa(enum accel_walk w)
 {
-	if (w == ACCEL_WALK_AVX512)
-		return "avx512";
-	if (w == ACCEL_WALK_AVX2)
-		return "avx2";
-#if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
-	return "sse2";
-#else
-	return "portable";
-#endif
+	return rt_simd_name(w == ACCEL_WALK_AVX512 ? RT_SIMD_AVX512
+			    : w == ACCEL_WALK_AVX2 ? RT_SIMD_AVX2 : RT_SIMD_BASE);
 }
 
 const char *accel_packets_name(const struct accel *a)
@@ -331,42 +324,16 @@ const char *accel_walk_name(const struct accel *a)
 	return walk_isa(a ? a->walk : ACCEL_WALK_BASE);
 }
 
-/* WHITTED_ISA caps the walks (sse2, avx2, avx512; unset or anything
- * else: the widest the processor has), to compare them on one machine. */
-static bool cap_is(const char *isa, const char *name)
-{
-	return isa && strcmp(isa, name) == 0;
-}
-
-const char *accel_walk_cap_unknown(void)
-{
-	const char *isa = getenv("WHITTED_ISA");
-
-	if (!isa || cap_is(isa, "sse2") || cap_is(isa, "avx2") || cap_is(isa, "avx512"))
-		return NULL;
-	return isa;
-}
-
-/* Whether the processor runs the instructions (base/simd.c asks it, in a
- * file compiled for the baseline). */
-static bool cpu_has(enum accel_walk w)
-{
-	return rt_simd_cpu_has(w == ACCEL_WALK_AVX512 ? RT_SIMD_AVX512 : RT_SIMD_AVX2) != 0;
-}
-
+/* A wide walk runs where the set of instructions in use (base/simd.h:
+ * the processor's widest, within WHITTED_ISA's limit) has its
+ * instructions and the file was compiled for them. */
 bool accel_walk_usable(enum accel_walk w)
 {
-	const char *isa = getenv("WHITTED_ISA");
-
 	switch (w) {
 	case ACCEL_WALK_AVX512:
-		if (cap_is(isa, "sse2") || cap_is(isa, "avx2"))
-			return false;
-		return accel_avx512_compiled() && cpu_has(w);
+		return rt_simd_level() >= RT_SIMD_AVX512 && accel_avx512_compiled();
 	case ACCEL_WALK_AVX2:
-		if (cap_is(isa, "sse2"))
-			return false;
-		return accel_avx2_compiled() && cpu_has(w);
+		return rt_simd_level() >= RT_SIMD_AVX2 && accel_avx2_compiled();
 	default:
 		return true;
 	}

@@ -80,9 +80,6 @@ const char *accel_packets_name(const struct accel *a);
 const char *accel_walk_name(const struct accel *a);
 /* Sizes, for --stats and the memory tests. */
 size_t accel_node_count(const struct accel *a);
-/* WHITTED_ISA's value when it names no walk (see accel_walk_usable), else
- * NULL. */
-const char *accel_walk_cap_unknown(void);
 size_t accel_bytes(const struct accel *a);
 
 #endif

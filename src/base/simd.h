@@ -1,19 +1,62 @@
-/* Which vector instructions the packets' loops use (base/lanes.h): the
- * widest the processor has, within WHITTED_ISA's limit. */
+/* The sets of vector instructions whitted's kernels are compiled for, in
+ * one table (simd.c), and the set the program uses: chosen once, at the
+ * first question, as the widest the processor runs and the build has,
+ * within WHITTED_ISA's limit (read here and nowhere else).
+ *
+ * A module's kernels are one source written over base/lanes.h (the
+ * render's render_kernels.c, the shapes' solve_kernels.c, the hierarchy's
+ * accel_kernels.c) that the Makefile compiles once per set this build has,
+ * with its -m flags and -DRT_SIMD_KERNEL=<suffix>, into one table named
+ * <prefix>_<suffix> (RT_SIMD_KERNEL_NAME); the module's tables, indexed by
+ * set, come from RT_SIMD_BUILT_SETS.  A new set is this header (its enum
+ * entry and its line in the list), its row in simd.c, its flags in the
+ * Makefile and its lanes in base/lanes.h. */
 #ifndef RT_SIMD_H
 #define RT_SIMD_H
+
+#include <stdbool.h>
 
 enum rt_simd {
 	RT_SIMD_BASE,	/* SSE2, or plain C in the portable build */
 	RT_SIMD_AVX2,
-	RT_SIMD_AVX512
+	RT_SIMD_AVX512,
+	RT_SIMD_COUNT
 };
 
-/* The widest set the processor runs and the build has (the portable
- * build: RT_SIMD_BASE), within WHITTED_ISA's limit (sse2, avx2, avx512);
- * asked once. */
+/* X(set, suffix) for each set whose kernels this build compiled: on
+ * x86-64 the Makefile says RT_SIMD_X86_KERNELS (not for Windows, whose
+ * compiler misaligns the wide spills, nor for the web); elsewhere the
+ * baseline alone. */
+#ifdef RT_SIMD_X86_KERNELS
+#define RT_SIMD_BUILT_SETS(X) X(RT_SIMD_BASE, base) X(RT_SIMD_AVX2, avx2) X(RT_SIMD_AVX512, avx512)
+#else
+#define RT_SIMD_BUILT_SETS(X) X(RT_SIMD_BASE, base)
+#endif
+
+/* In a kernel source: the name of its table in the set being compiled. */
+#define RT_SIMD_CAT_(a, b) a##_##b
+#define RT_SIMD_CAT(a, b) RT_SIMD_CAT_(a, b)
+#define RT_SIMD_KERNEL_NAME(prefix) RT_SIMD_CAT(prefix, RT_SIMD_KERNEL)
+
+/* A module lists its tables by set, NULL for a set not built:
+ *   #define KERNELS_DECLARE(set, suffix) extern const struct k k_##suffix;
+ *   RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
+ *   #define KERNELS_ENTRY(set, suffix) [set] = &k_##suffix,
+ *   static const struct k *const sets[RT_SIMD_COUNT] = { RT_SIMD_BUILT_SETS(KERNELS_ENTRY) };
+ */
+
+/* The set in use: the widest the processor runs and the build has
+ * (the portable build: RT_SIMD_BASE), within WHITTED_ISA's limit. */
 enum rt_simd rt_simd_level(void);
-/* Whether the processor runs set s (whatever WHITTED_ISA says). */
+/* Whether the processor runs set s (whatever the build or WHITTED_ISA). */
 int rt_simd_cpu_has(enum rt_simd s);
+/* Whether this build compiled set s's kernels (and may run them). */
+bool rt_simd_built(enum rt_simd s);
+/* Set s's name: "sse2" ("portable" in the portable build), "avx2",
+ * "avx512": WHITTED_ISA's words, and what --stats prints. */
+const char *rt_simd_name(enum rt_simd s);
+/* WHITTED_ISA's value when it names no set (it is then ignored), else
+ * NULL. */
+const char *rt_simd_request_unknown(void);
 
 #endif

@@ -38,7 +38,7 @@ void report_stats(const struct scene *s, const struct settings *set, const struc
 
 	settings_format(set, text, sizeof(text));
 	fprintf(stderr,
-		"scene:    %zu objects, %zu lights, %dx%d, recursion %d, %zu hierarchy nodes (%.1f MiB, %s walk, %s)\n"
+		"scene:    %zu objects, %zu lights, %dx%d, recursion %d, %zu hierarchy nodes (%.1f MiB, %s walk, %s; %s kernels)\n"
 		"settings: %s\n"
 		"time:     parse %.3f s, build %.3f s, render %.3f s (%d threads), write %.3f s\n"
 		"rays:     %llu primary, %llu shadow, %llu reflection, %llu refracted, %.2f M rays/s\n"
@@ -46,7 +46,7 @@ void report_stats(const struct scene *s, const struct settings *set, const struc
 		scene_shape_count(s), scene_light_count(s), scene_image_size(s), scene_image_size(s),
 		scene_recursion(s),
 		scene_hierarchy_nodes(s), scene_hierarchy_bytes(s) / 1048576.0, scene_hierarchy_walk(s),
-		scene_hierarchy_packets(s),
+		scene_hierarchy_packets(s), scene_kernels_isa(),
 		text,
 		t->parse, t->build, t->render, threads, t->write,
 		(unsigned long long)rc->primary, (unsigned long long)rc->shadow,

@@ -21,12 +21,8 @@ struct camera_lanes_in {
 void camera_lanes(const struct camera *c, const struct camera_lanes_in *in,
 		  struct ray_packet *out);
 
-/* One set of instructions' camera_lanes (the baseline's always there; the
- * others NULL in a file compiled without them). */
+/* One set of instructions' camera_lanes (render_kernels.h). */
 typedef void camera_lanes_fn(const struct camera *c, const struct camera_lanes_in *in,
 			     struct ray_packet *out);
-extern camera_lanes_fn *const camera_lanes_base;
-extern camera_lanes_fn *const camera_lanes_avx2;
-extern camera_lanes_fn *const camera_lanes_avx512;
 
 #endif

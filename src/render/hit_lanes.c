@@ -1,30 +1,11 @@
 /* hit_lanes (hit_lanes.h): the points, the shapes' normals and colours a
- * call a shape of the packet, then the shared part in the widest
- * instructions the processor has (hit_lanes_avx2.c, hit_lanes_avx512.c;
- * the baseline's here). */
-#include "base/simd.h"
-#include "render/hit_lanes.h"
-
-#define HIT_LANES_FN(name) hit_lanes_base_##name
-#include "render/hit_lanes_lanes.h"
-
-const struct hit_lanes_set hit_lanes_base = { HIT_LANES_FN(points), HIT_LANES_FN(turn),
-					       HIT_LANES_FN(offsets), HIT_LANES_FN(bounce) };
+ * call a shape of the packet, then the shared part in the set of
+ * instructions in use (render_kernels.h). */
+#include "render/render_kernels.h"
 
 static const struct hit_lanes_set *chosen(void)
 {
-	switch (rt_simd_level()) {
-	case RT_SIMD_AVX512:
-		if (hit_lanes_avx512.turn)
-			return &hit_lanes_avx512;
-		/* fall through */
-	case RT_SIMD_AVX2:
-		if (hit_lanes_avx2.turn)
-			return &hit_lanes_avx2;
-		/* fall through */
-	default:
-		return &hit_lanes_base;
-	}
+	return &render_kernels()->hit;
 }
 
 void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t,

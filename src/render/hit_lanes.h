@@ -48,8 +48,7 @@ void hit_lanes_bounce(const struct hit_lanes *h, struct ray_packet *out);
  * points makes the hits' points (lanes not hit copies of the first one)
  * and their rays' directions; turn makes, from the directions d (a coordinate an array) and the
  * normals in out->pts, d.N, N turned, R and, from the points, the
- * offsets; offsets and bounce are the functions above.  The baseline's
- * always there; the others all NULL in a file compiled without them. */
+ * offsets; offsets and bounce are the functions above (render_kernels.h). */
 struct hit_lanes_set {
 	void (*points)(const struct ray_packet *r, const double *t, uint32_t hits,
 		       struct light_dirs_points *out, double (*d)[HIT_LANES]);
@@ -57,6 +56,5 @@ struct hit_lanes_set {
 	void (*offsets)(const struct ray_packet *r, double *t_min);
 	void (*bounce)(const struct hit_lanes *h, struct ray_packet *out);
 };
-extern const struct hit_lanes_set hit_lanes_base, hit_lanes_avx2, hit_lanes_avx512;
 
 #endif

@@ -42,12 +42,8 @@ struct light_rays {
 uint32_t light_dirs(const struct light_dirs_points *p, struct vec3 pos, struct light_dirs *out,
 		    struct light_rays *rays);
 
-/* One set of instructions' light_dirs (the baseline's always there; the
- * others NULL in a file compiled without them). */
+/* One set of instructions' light_dirs (render_kernels.h). */
 typedef uint32_t light_dirs_fn(const struct light_dirs_points *p, struct vec3 pos,
 			       struct light_dirs *out, struct light_rays *rays);
-extern light_dirs_fn *const light_dirs_base;
-extern light_dirs_fn *const light_dirs_avx2;
-extern light_dirs_fn *const light_dirs_avx512;
 
 #endif

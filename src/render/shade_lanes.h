@@ -38,13 +38,9 @@ struct shade_lanes {
 uint64_t shade_lanes(const struct shade_lanes *in, const struct render_shadows *pre,
 		     const struct light *lights, size_t n_lights, double out[3][SHADE_LANES]);
 
-/* One set of instructions' shade_lanes (the baseline's always there; the
- * others NULL in a file compiled without them). */
+/* One set of instructions' shade_lanes (render_kernels.h). */
 typedef uint64_t shade_lanes_fn(const struct shade_lanes *in, const struct render_shadows *pre,
 				const struct light *lights, size_t n_lights,
 				double out[3][SHADE_LANES]);
-extern shade_lanes_fn *const shade_lanes_base;
-extern shade_lanes_fn *const shade_lanes_avx2;
-extern shade_lanes_fn *const shade_lanes_avx512;
 
 #endif

@@ -7,6 +7,7 @@
 
 #include "accel/accel.h"
 #include "base/alloc.h"
+#include "base/simd.h"
 #include "scene/scene_impl.h"
 #include "shapes/shapes.h"
 #include "whitted/camera.h"
@@ -317,7 +318,12 @@ const char *scene_hierarchy_packets(const struct scene *s)
 
 const char *scene_walk_cap_unknown(void)
 {
-	return accel_walk_cap_unknown();
+	return rt_simd_request_unknown();
+}
+
+const char *scene_kernels_isa(void)
+{
+	return rt_simd_name(rt_simd_level());
 }
 
 int scene_set_recursion(struct scene *s, long recursion, struct diag *d)

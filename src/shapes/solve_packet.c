@@ -1,31 +1,25 @@
-/* The packet solvers in the baseline's instructions (SSE2, or plain C in
- * the portable build), and the choice of the widest set the processor
- * has: solve_packet_avx2.c and solve_packet_avx512.c hold the others. */
+/* The packet solvers of the set of instructions in use: one table a set,
+ * compiled from solve_kernels.c (base/simd.h). */
+#include <stddef.h>
+
 #include "base/simd.h"
 #include "shapes/solve_packet.h"
 
-#define SOLVE_LANES(name) solve_lanes_base_##name
-#include "shapes/solve_packet_lanes.h"
-
-const struct solve_packet_set solve_packet_base = {
-	SOLVE_LANES(sphere), SOLVE_LANES(triangle), SOLVE_LANES(floor), SOLVE_LANES(floor_cells),
-	SOLVE_LANES(sphere_normal)
+#define KERNELS_DECLARE(set, suffix) extern const struct solve_packet_set solve_kernels_##suffix;
+RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
+#define KERNELS_ENTRY(set, suffix) [set] = &solve_kernels_##suffix,
+static const struct solve_packet_set *const solve_sets[RT_SIMD_COUNT] = {
+	RT_SIMD_BUILT_SETS(KERNELS_ENTRY)
 };
+
+const struct solve_packet_set *solve_packet_set_of(enum rt_simd s)
+{
+	return (unsigned)s < RT_SIMD_COUNT ? solve_sets[s] : NULL;
+}
 
 static const struct solve_packet_set *chosen(void)
 {
-	switch (rt_simd_level()) {
-	case RT_SIMD_AVX512:
-		if (solve_packet_avx512.sphere)
-			return &solve_packet_avx512;
-		/* fall through */
-	case RT_SIMD_AVX2:
-		if (solve_packet_avx2.sphere)
-			return &solve_packet_avx2;
-		/* fall through */
-	default:
-		return &solve_packet_base;
-	}
+	return solve_sets[rt_simd_level()];
 }
 
 uint32_t solve_packet_sphere(const struct ray_packet *p, uint32_t active, struct vec3 centre,

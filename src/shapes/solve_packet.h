@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 
+#include "base/simd.h"
 #include "whitted/shape.h"
 
 uint32_t solve_packet_sphere(const struct ray_packet *p, uint32_t active, struct vec3 centre,
@@ -30,8 +31,8 @@ void solve_packet_floor_cells(const double *const p[3], uint32_t active, int shi
 void solve_packet_sphere_normal(const double *const p[3], uint32_t active, struct vec3 centre,
 				double inv_radius, double *const n[3]);
 
-/* One set of instructions' solvers (solve_packet_lanes.h); all NULL in a
- * file compiled without them. */
+/* One set of instructions' solvers (solve_packet_lanes.h, compiled per set
+ * from solve_kernels.c). */
 struct solve_packet_set {
 	uint32_t (*sphere)(const struct ray_packet *p, uint32_t active, struct vec3 centre,
 			   double radius_sq, const double *t_min, double *t_max);
@@ -45,6 +46,7 @@ struct solve_packet_set {
 			      double inv_radius, double *const n[3]);
 };
 
-extern const struct solve_packet_set solve_packet_base, solve_packet_avx2, solve_packet_avx512;
+/* The solvers of set s, or NULL where the build has none (the tests). */
+const struct solve_packet_set *solve_packet_set_of(enum rt_simd s);
 
 #endif

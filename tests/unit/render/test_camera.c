@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "base/simd.h"
+#include "render/render_kernels.h"
 #include "render/camera_lanes.h"
 #include "render/camera_span.h"
 #include "whitted/camera.h"
@@ -362,7 +363,7 @@ static void test_camera_classic_unchanged(void **state)
 static void check_lanes(const struct camera *c, const struct camera_span *sp, int py, int n,
 			enum rt_simd isa)
 {
-	camera_lanes_fn *const sets[3] = { camera_lanes_base, camera_lanes_avx2, camera_lanes_avx512 };
+	const struct render_kernels *k = render_kernels_of(isa);
 	struct camera_lanes_in in;
 	struct ray_packet out;
 	int i, ch;
@@ -376,7 +377,7 @@ static void check_lanes(const struct camera *c, const struct camera_span *sp, in
 			in.uv[ch][i] = vec3_component(up_v, ch);
 		}
 	}
-	sets[isa](c, &in, &out);
+	k->camera_lanes(c, &in, &out);
 	for (i = 0; i < CAMERA_LANES; i++) {
 		struct ray got = ray_packet_get(&out, i);
 		struct ray want = camera_ray(c, sp->x0 + i % n, py + i / n);
@@ -399,7 +400,6 @@ static void check_lanes(const struct camera *c, const struct camera_span *sp, in
  * processor lacks it). */
 static void test_camera_span_is_camera_ray(void **state)
 {
-	camera_lanes_fn *const sets[3] = { camera_lanes_base, camera_lanes_avx2, camera_lanes_avx512 };
 	enum rt_simd isa = SUPPORT_ISA_OF(state);
 	static const struct {
 		struct vec3 eye, look, up;
@@ -414,7 +414,7 @@ static void test_camera_span_is_camera_ray(void **state)
 	};
 	size_t k;
 
-	support_need_isa(isa, sets[isa] != NULL);
+	support_need_isa(isa, render_kernels_of(isa) != NULL);
 	for (k = 0; k < sizeof(views) / sizeof(views[0]); k++) {
 		struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 		struct camera c;

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "base/simd.h"
+#include "render/render_kernels.h"
 #include "render/hit_lanes.h"
 #include "render/shade_math.h"
 #include "shapes/shapes.h"
@@ -186,13 +187,12 @@ static void check_rays(const struct hit_lanes_set *set, const char *name)
  * lacks it. */
 static void test_hit_lanes_sets(void **state)
 {
-	const struct hit_lanes_set *const sets[3] = { &hit_lanes_base, &hit_lanes_avx2,
-						      &hit_lanes_avx512 };
 	enum rt_simd isa = SUPPORT_ISA_OF(state);
+	const struct render_kernels *k = render_kernels_of(isa);
 
-	support_need_isa(isa, sets[isa]->turn != NULL);
-	check_set(sets[isa], support_isa_tag(isa));
-	check_rays(sets[isa], support_isa_tag(isa));
+	support_need_isa(isa, k != NULL);
+	check_set(&k->hit, support_isa_tag(isa));
+	check_rays(&k->hit, support_isa_tag(isa));
 }
 
 #define N_SHAPES 7

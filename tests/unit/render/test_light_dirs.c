@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "base/simd.h"
+#include "render/render_kernels.h"
 #include "render/light_dirs.h"
 #include "support.h"
 
@@ -82,11 +83,11 @@ static void check_set(light_dirs_fn *set, const char *name)
  * lacks it), and the one chosen at run time. */
 static void test_light_dirs_set(void **state)
 {
-	light_dirs_fn *const sets[3] = { light_dirs_base, light_dirs_avx2, light_dirs_avx512 };
 	enum rt_simd isa = SUPPORT_ISA_OF(state);
+	const struct render_kernels *k = render_kernels_of(isa);
 
-	support_need_isa(isa, sets[isa] != NULL);
-	check_set(sets[isa], support_isa_tag(isa));
+	support_need_isa(isa, k != NULL);
+	check_set(k->light_dirs, support_isa_tag(isa));
 }
 
 static void test_light_dirs_chosen_set(void **state)

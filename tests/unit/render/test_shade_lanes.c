@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "base/simd.h"
+#include "render/render_kernels.h"
 #include "render/shade_hit.h"
 #include "render/shade_lanes.h"
 #include "scene/scene_impl.h"
@@ -171,11 +172,11 @@ static void check_set(shade_lanes_fn *set, const char *name)
  * lacks it), and the one chosen at run time. */
 static void test_shade_lanes_set(void **state)
 {
-	shade_lanes_fn *const sets[3] = { shade_lanes_base, shade_lanes_avx2, shade_lanes_avx512 };
 	enum rt_simd isa = SUPPORT_ISA_OF(state);
+	const struct render_kernels *k = render_kernels_of(isa);
 
-	support_need_isa(isa, sets[isa] != NULL);
-	check_set(sets[isa], support_isa_tag(isa));
+	support_need_isa(isa, k != NULL);
+	check_set(k->shade_lanes, support_isa_tag(isa));
 }
 
 static void test_shade_lanes_chosen_set(void **state)

@@ -28,12 +28,10 @@ static const struct material mat = { { 1, 1, 1 }, 0.1, 0.5, 0.2, 0.1, 5, 0.0, 1.
  * it. */
 static int usable_sets(void **state, const struct solve_packet_set **sets, const char **names)
 {
-	static const struct solve_packet_set *const all[3] = { &solve_packet_base, &solve_packet_avx2,
-							       &solve_packet_avx512 };
 	enum rt_simd isa = SUPPORT_ISA_OF(state);
 
-	support_need_isa(isa, all[isa]->sphere != NULL);
-	sets[0] = all[isa];
+	support_need_isa(isa, solve_packet_set_of(isa) != NULL);
+	sets[0] = solve_packet_set_of(isa);
 	names[0] = support_isa_tag(isa);
 	return 1;
 }
