@@ -90,7 +90,7 @@ PLATFORM_SRC ?= src/base/platform_posix.c
 # Not on 32-bit x86, whose baseline does its doubles in the x87 unit:
 # vector code beside it would round differently, so there every path is
 # the plain C one.
-KERNEL_SRC := src/render/render_kernels.c src/shapes/solve_kernels.c
+KERNEL_SRC := src/accel/accel_kernels.c src/render/render_kernels.c src/shapes/solve_kernels.c
 SIMD_SETS := base
 ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
 SIMD_SETS := base avx2 avx512
@@ -163,16 +163,10 @@ $(BUILD)/san/%_$(1).o: %.c
 endef
 $(foreach s,$(SIMD_SETS),$(eval $(call SIMD_KERNEL_RULES,$(s))))
 
-# The hierarchy's AVX2 and AVX-512 walks are compiled for them on x86 (the
-# rest of the program for the baseline) and chosen at the build by what
-# the processor has (src/accel/accel_build.c, src/base/simd.c).
-ifneq ($(filter x86_64% amd64%,$(shell $(CC) -dumpmachine)),)
-%/accel/accel_walk_avx2.o: ALL_CFLAGS += -mavx2
-%/accel/accel_walk_avx512.o: ALL_CFLAGS += -mavx512f
 # The AVX-512 walk's float box tests widen their answers with fused
-# multiply-adds (every processor with AVX-512 has them; base/simd.c asks).
-%/accel/accel_walk_avx512.o: ALL_CFLAGS += -mfma
-endif
+# multiply-adds (every processor with AVX-512 has them; base/simd.c asks);
+# everywhere else -ffp-contract=off keeps a * b + c two roundings.
+%/accel/accel_kernels_avx512.o: ALL_CFLAGS += -mfma
 
 # What RT_HAVE_ISAL decides is compiled anew when the library the build
 # found changes (libisal-dev installed or removed since the last build).

@@ -13,6 +13,7 @@
 
 #include "accel/accel.h"
 #include "accel/accel_build.h"
+#include "accel/accel_kernels.h"
 #include "accel/accel_tree.h"
 #include "base/alloc.h"
 
@@ -312,17 +313,11 @@ static int leaf_order(struct accel *a, const struct build *b, struct shape *cons
 	return 0;
 }
 
-/* The walks for a scene of n_shapes: the widest the processor has, for
- * a scene big enough to pay for them. */
-static enum accel_walk choose_walk(size_t n_shapes)
+/* The walks for a scene of n_shapes: the set in use (the widest the
+ * processor has), for a scene big enough to pay for them. */
+static enum rt_simd choose_walk(size_t n_shapes)
 {
-	if (n_shapes < ACCEL_SIMD_MIN_SHAPES)
-		return ACCEL_WALK_BASE;
-	if (accel_walk_usable(ACCEL_WALK_AVX512))
-		return ACCEL_WALK_AVX512;
-	if (accel_walk_usable(ACCEL_WALK_AVX2))
-		return ACCEL_WALK_AVX2;
-	return ACCEL_WALK_BASE;
+	return n_shapes < ACCEL_SIMD_MIN_SHAPES ? RT_SIMD_BASE : rt_simd_level();
 }
 
 int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struct accel **out,
@@ -332,13 +327,17 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 }
 
 int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
-		     enum accel_walk walk, struct accel **out, struct diag *d)
+		     enum rt_simd walk, struct accel **out, struct diag *d)
 {
 	struct build b = { .refs = NULL, .nodes = NULL };
-	int width = accel_walk_width(walk);
+	const struct accel_kernels *k = accel_kernels_of(walk);
 	struct accel *a;
+	int width;
 
 	*out = NULL;
+	if (!k)
+		return diag_fail(d, RT_E_INVALID, "this build has no %s walks", rt_simd_name(walk));
+	width = k->width;
 	/* A slot holds an index of 29 bits (accel_tree.h), a key 32. */
 	if (n_shapes > ACCEL_SHAPES_MAX)
 		return diag_fail(d, RT_E_RANGE,
@@ -347,10 +346,10 @@ int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
 	a = rt_calloc(1, sizeof(*a));
 	if (!a)
 		goto out_nomem;
-	a->walk = walk;
-	a->rays = accel_walk_usable(ACCEL_WALK_AVX512) ? ACCEL_WALK_AVX512
-		  : accel_walk_usable(ACCEL_WALK_AVX2) ? ACCEL_WALK_AVX2
-						       : ACCEL_WALK_BASE;
+	a->walk = k;
+	a->walk_set = walk;
+	a->width = width;
+	accel_set_rays(a, rt_simd_level());
 	if (collect_refs(shapes, n_shapes, threads, width, a, &b) < 0)
 		goto out_free;
 	if (a->n_bounded > 0) {

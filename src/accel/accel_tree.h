@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "accel/accel.h"
+#include "base/simd.h"
 #include "whitted/diag.h"
 #include "whitted/ray.h"
 #include "whitted/shape.h"
@@ -102,19 +103,6 @@ static inline size_t accel_node_bytes(int width)
 	return (size_t)width * (6 * sizeof(float) + sizeof(uint32_t));
 }
 
-/* Which walks run, chosen at the build by the processor and the tree's
- * size (accel_build.c), and with them the tree's width. */
-enum accel_walk {
-	ACCEL_WALK_BASE,	/* SSE2, or plain C in the portable build: four children */
-	ACCEL_WALK_AVX2,	/* eight children */
-	ACCEL_WALK_AVX512	/* eight children */
-};
-
-static inline int accel_walk_width(enum accel_walk w)
-{
-	return w == ACCEL_WALK_BASE ? 4 : 8;
-}
-
 /* Which shape wins an exact tie, whatever order a walk meets them in:
  * the one of the lower key.  An unbounded shape's key is its place among
  * the unbounded ones, a bounded shape's the number of unbounded ones plus
@@ -127,6 +115,8 @@ static inline int accel_walk_width(enum accel_walk w)
  * not depend on the tree's shape, its width or the order of its walk,
  * and every walk (eight lanes, four or two, packets or single rays, any
  * thread count) gives the same image. */
+struct accel_kernels;
+
 struct accel {
 	void *nodes;		/* struct bvh4_node or bvh8_node by walk; the root first */
 	size_t n_nodes;
@@ -136,17 +126,27 @@ struct accel {
 	const struct shape **unbounded;	/* in the scene's order */
 	uint32_t *unbounded_key;	/* 0, 1, ... */
 	size_t n_unbounded;
-	enum accel_walk walk;
-	/* A four-child tree's packets go a ray a lane (accel_packet_rays.h),
-	 * in these walks' instructions: the widest usable at the build. */
-	enum accel_walk rays;
+	/* The walks, of a set of instructions chosen at the build by the
+	 * processor and the tree's size (accel_build.c), and the width of
+	 * the tree they take (accel_kernels.h). */
+	const struct accel_kernels *walk;
+	enum rt_simd walk_set;
+	int width;
+	/* A four-child tree's packets go a ray a lane (accel_packet_rays.h)
+	 * in this set's instructions: the one in use. */
+	const struct accel_kernels *rays;
+	enum rt_simd rays_set;
+	char packets_name[64];		/* for --stats: "avx2 packets, a ray a lane" */
 };
 
-/* accel_build with the walks `walk` (and their tree's width) whatever
- * the processor and the tree's size: for the tests, which compare the
- * walks.  The caller checks accel_walk_usable first. */
+/* accel_build with the walks of set `walk` (and their tree's width)
+ * whatever the processor and the tree's size: for the tests, which
+ * compare the walks.  The caller checks accel_walk_usable first. */
 int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
-		     enum accel_walk walk, struct accel **out, struct diag *d);
+		     enum rt_simd walk, struct accel **out, struct diag *d);
+/* The packets of a's four-child tree a ray a lane in set s (the tests
+ * compare them; the build takes the set in use). */
+void accel_set_rays(struct accel *a, enum rt_simd s);
 
 /* Builds a->nodes and a->n_nodes, the tree of `width` (4 or 8) children
  * a node, from the binary one (its root at 0, `leaves` leaves), with up
@@ -158,98 +158,9 @@ void accel_collapse(struct accel *a, const struct bvh_node *binary, size_t leave
 /* The most nodes a tree of `leaves` leaves can have at `width`. */
 size_t accel_collapse_room(size_t leaves, int width);
 
-/* Whether the processor (and the build: the compiler asked for it, not
- * the portable build) runs walk w, within WHITTED_ISA's limit (sse2,
- * avx2, avx512: the widest walk allowed, to compare them). */
-bool accel_walk_usable(enum accel_walk w);
-
-/* The walks with AVX2 box tests over eight-child nodes
- * (accel_walk_avx2.c: the same boxes with the same arithmetic, lane by
- * lane, as the base walks) and with AVX-512 ones (accel_walk_avx512.c: in
- * floats, entering every box the double tests enter, no later:
- * accel_float_box.h), so the same hits.  Called only where
- * accel_walk_usable says so. */
-const struct shape *accel_avx2_intersect(const struct accel *a, const struct ray *r,
-					 double t_min, double *t_max);
-bool accel_avx2_occluded(const struct accel *a, const struct ray *r, double t_min, double t_max);
-void accel_avx2_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				 const double *t_min, double *t_max, const struct shape **hit);
-uint32_t accel_avx2_occluded_packet(const struct accel *a, const struct ray *r, int n,
-				    const double *t_min, const double *t_max);
-bool accel_avx2_compiled(void);	/* compiled for its instructions */
-const struct shape *accel_avx512_intersect(const struct accel *a, const struct ray *r,
-					   double t_min, double *t_max);
-bool accel_avx512_occluded(const struct accel *a, const struct ray *r, double t_min,
-			   double t_max);
-void accel_avx512_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				   const double *t_min, double *t_max, const struct shape **hit);
-uint32_t accel_avx512_occluded_packet(const struct accel *a, const struct ray *r, int n,
-				      const double *t_min, const double *t_max);
-bool accel_avx512_compiled(void);
-#ifdef RT_TEST_HOOKS
-/* For the tests (in the test build only): node's children as the AVX-512 walk's float test sees
- * them for ray r in (t_min, t_max) (its mask, the entries in
- * float_entry), or -1 where that walk tests the ray in doubles; and as
- * the double test sees them (*exact_mask, exact_entry; 0 where this file
- * was compiled without AVX-512). */
-int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
-			    double t_max, double float_entry[8], int *exact_mask,
-			    double exact_entry[8]);
-/* Likewise for the small trees' packets (accel_packet_rays.h): the
- * children of node each of the ACCEL_PACKET rays r enters in (t_min[i],
- * t_max[i]) by the float test (float_child[c] bit i, the entries in
- * float_entry[c][i]), and by the double test (exact_child, exact_entry);
- * returns 1, or 0 where the float tests do not hold the packet (and
- * leave float_* alone), -1 without AVX-512 (and leave all alone). */
-int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
-				 const double *t_min, const double *t_max, uint32_t float_child[4],
-				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
-				 double exact_entry[4][ACCEL_PACKET]);
-#endif
-
-/* The packets through a four-child tree, a ray a vector lane
- * (accel_packet_rays.h): in SSE2 or plain C (accel_packet_rays.c), AVX2
- * and AVX-512 (the walks' files); accel_intersect_packet's contract. */
-void accel_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				 const double *t_min, double *t_max, const struct shape **hit);
-uint32_t accel_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
-				    const double *t_min, const double *t_max);
-void accel_avx2_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
-				      const double *t_min, double *t_max, const struct shape **hit);
-uint32_t accel_avx2_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
-					 const double *t_min, const double *t_max);
-void accel_avx512_rays_intersect_packet(const struct accel *a, const struct ray *r, int n,
-					const double *t_min, double *t_max,
-					const struct shape **hit);
-uint32_t accel_avx512_rays_occluded_packet(const struct accel *a, const struct ray *r, int n,
-					   const double *t_min, const double *t_max);
-/* accel_occluded_lanes's contract, a ray a vector lane likewise. */
-uint32_t accel_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-				   uint32_t active, const double *t_min, const double *t_max);
-uint32_t accel_avx2_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-					uint32_t active, const double *t_min, const double *t_max);
-uint32_t accel_avx512_rays_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-					  uint32_t active, const double *t_min,
-					  const double *t_max);
-/* The packets through the AVX-512 walk's eight-child tree, a ray a
- * vector lane (accel_packet_rays.h over struct bvh8_node; its
- * intersect_packet and occluded_packet are these too): the contracts of
- * accel_occluded_lanes and accel_intersect_lanes. */
-uint32_t accel_avx512_rays8_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-					   uint32_t active, const double *t_min,
-					   const double *t_max);
-void accel_avx512_rays8_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-					uint32_t active, const double *t_min, double *t_max,
-					const struct shape **hit);
-/* accel_intersect_lanes's contract, a ray a vector lane likewise. */
-void accel_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-				uint32_t active, const double *t_min, double *t_max,
-				const struct shape **hit);
-void accel_avx2_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-				     uint32_t active, const double *t_min, double *t_max,
-				     const struct shape **hit);
-void accel_avx512_rays_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-				       uint32_t active, const double *t_min, double *t_max,
-				       const struct shape **hit);
+/* Whether set s's walks run here: the build has them and s is no wider
+ * than the set in use (base/simd.h: the processor's, within WHITTED_ISA's
+ * limit). */
+bool accel_walk_usable(enum rt_simd s);
 
 #endif

@@ -12,6 +12,7 @@
 
 #include "accel/accel.h"
 #include "accel/accel_build.h"
+#include "accel/accel_kernels.h"
 #include "accel/accel_tree.h"
 #include "shapes/solve.h"
 #include "support.h"
@@ -33,7 +34,7 @@ static void add(struct scene *s, struct shape *sh)
  * boxes. */
 static void assert_accel_sound(const struct accel *a)
 {
-	const int w = accel_walk_width(a->walk);
+	const int w = a->width;
 	unsigned char *seen = test_calloc(a->n_bounded + 1, 1);
 	unsigned char *reached = test_calloc(a->n_nodes + 1, 1);
 	struct { size_t node; float lo[3], hi[3]; } stack[(ACCEL_WIDTH_MAX - 1) * ACCEL_STACK + 1];
@@ -311,7 +312,7 @@ static void test_accel_wide_walks_match_the_base_walks(void **state)
 	(void)state;
 	/* Every processor with AVX-512 has AVX2; the set says whether the
 	 * AVX-512 walks are among those compared. */
-	support_need_isa(RT_SIMD_AVX2, accel_walk_usable(ACCEL_WALK_AVX2));
+	support_need_isa(RT_SIMD_AVX2, accel_walk_usable(RT_SIMD_AVX2));
 	for (scene_no = 0; scene_no < 6; scene_no++) {
 		struct scene *s = scene_create("random");
 		int n = 40 + scene_no * scene_no * 60, i, k;
@@ -488,7 +489,7 @@ static void test_accel_many_at_one_point(void **state)
 /* Node i's slots in a's tree, of either width. */
 static const uint32_t *node_slots(const struct accel *a, size_t i)
 {
-	int w = accel_walk_width(a->walk);
+	int w = a->width;
 
 	return (const uint32_t *)(const void *)((const char *)a->nodes + i * accel_node_bytes(w) +
 						 6 * (size_t)w * sizeof(float));
@@ -501,7 +502,7 @@ static const uint32_t *node_slots(const struct accel *a, size_t i)
  * not need the processor to run a walk: these trees are not walked). */
 static void assert_same_tree_for_threads(struct scene *s)
 {
-	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2 };
+	static const enum rt_simd walks[] = { RT_SIMD_BASE, RT_SIMD_AVX2 };
 	static const int threads[] = { 2, 3, 7, 64 };
 	struct diag d;
 	size_t j, k, i;
@@ -512,7 +513,7 @@ static void assert_same_tree_for_threads(struct scene *s)
 		size_t bytes;
 
 		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[j], &one, &d), 0);
-		bytes = one->n_nodes * accel_node_bytes(accel_walk_width(walks[j]));
+		bytes = one->n_nodes * accel_node_bytes(accel_kernels_of(walks[j])->width);
 		assert_accel_sound(one);
 		for (k = 0; k < sizeof(threads) / sizeof(threads[0]); k++) {
 			assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, threads[k], walks[j],
@@ -549,9 +550,9 @@ static void test_accel_threads_build_the_same_tree(void **state)
 	 * children, 40% at eight (here 36%: nodes over only two or three
 	 * leaves), within the room the build allows, the root a node. */
 	assert_true(s->accel->n_nodes <= s->accel->n_bounded *
-			     (accel_walk_width(s->accel->walk) == 4 ? 5 : 4) / 10);
+			     (s->accel->width == 4 ? 5 : 4) / 10);
 	assert_true(s->accel->n_nodes <=
-		    accel_collapse_room(s->accel->n_bounded, accel_walk_width(s->accel->walk)));
+		    accel_collapse_room(s->accel->n_bounded, s->accel->width));
 	assert_int_equal(node_slots(s->accel, 0)[0] & 7, ACCEL_SLOT_NODE);
 	/* The nodes packed at 112 and 224 bytes from a cache line's start. */
 	assert_int_equal((uintptr_t)s->accel->nodes % ACCEL_NODE_ALIGN, 0);
@@ -572,7 +573,7 @@ static void test_accel_threads_build_the_same_tree(void **state)
  * tree whose collapse leaves every bottom node two leaves. */
 static void test_accel_collapse_room_holds_the_fullest_tree(void **state)
 {
-	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2 };
+	static const enum rt_simd walks[] = { RT_SIMD_BASE, RT_SIMD_AVX2 };
 	struct scene *s = scene_create("line");
 	size_t leaves, j, w;
 	struct diag d;
@@ -589,7 +590,7 @@ static void test_accel_collapse_room_holds_the_fullest_tree(void **state)
 	for (j = 0; j < 2; j++) {
 		struct accel *a;
 		assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 2, walks[j], &a, &d), 0);
-		w = (size_t)accel_walk_width(walks[j]);
+		w = (size_t)accel_kernels_of(walks[j])->width;
 		assert_int_equal(a->n_bounded, 8192);
 		assert_int_equal(a->n_nodes, (w * 8192 / 2 - 1) / (w - 1));	/* 5461, 4681 */
 		assert_true(a->n_nodes <= accel_collapse_room(8192, (int)w));

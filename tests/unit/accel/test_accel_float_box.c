@@ -14,6 +14,7 @@
 
 #include "accel/accel.h"
 #include "accel/accel_float_box.h"
+#include "accel/accel_kernels.h"
 #include "accel/accel_tree.h"
 #include "support.h"
 
@@ -106,7 +107,7 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 	long trials = 0, floats = 0, entered = 0, ties = 0;
 
 	(void)state;
-	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	support_rng_seed(20261203);
 	for (trials = 0; trials < TRIALS; trials++) {
 		struct bvh8_node n;
@@ -123,7 +124,7 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 			t_max = 1e300;
 		if (support_rng() < 0.03)
 			t_min = support_rng() * 0x1p-130;
-		fmask = accel_avx512_node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
+		fmask = accel_kernels_of(RT_SIMD_AVX512)->node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
 		if (xmask && support_rng() < 0.3) {
 			/* Again with t_max at an entry the double test found:
 			 * the tie at a hit's distance must stay entered. */
@@ -131,7 +132,7 @@ static void test_float_box_tests_enter_every_box_the_double_test_enters(void **s
 				;
 			if (xe[c] >= t_min) {
 				t_max = xe[c];
-				fmask = accel_avx512_node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
+				fmask = accel_kernels_of(RT_SIMD_AVX512)->node_tests(&n, &r, t_min, t_max, fe, &xmask, xe);
 				ties++;
 			}
 		}
@@ -184,7 +185,7 @@ static void test_float_box_tests_of_packets_enter_every_box_the_double_test_ente
 	long packets = 0, floats = 0, entered = 0;
 
 	(void)state;
-	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	support_rng_seed(3);
 	for (packets = 0; packets < TRIALS / ACCEL_PACKET; packets++) {
 		struct bvh4_node n4;
@@ -225,7 +226,7 @@ static void test_float_box_tests_of_packets_enter_every_box_the_double_test_ente
 			t_min[i] = support_rng() < 0.6 ? 1e-6 * m : support_uniform(0.0, s);
 			t_max[i] = support_rng() < 0.3 ? INFINITY : t_min[i] + support_uniform(0.0, 4.0 * s);
 		}
-		got = accel_avx512_rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
+		got = accel_kernels_of(RT_SIMD_AVX512)->rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
 		assert_true(got >= 0);
 		if (got == 0)
 			continue;
@@ -257,7 +258,7 @@ static void test_float_box_tests_origins_below_the_normal_floats(void **state)
 	int xmask, fmask, c, k;
 
 	(void)state;
-	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	memset(&n, 0, sizeof(n));
 	for (c = 0; c < 8; c++) {
 		n.slot[c] = 1;
@@ -271,7 +272,7 @@ static void test_float_box_tests_origins_below_the_normal_floats(void **state)
 	n.lo[2][0] = -1, n.hi[2][0] = 1;
 	r.origin = vec3_make(-1000.51 * 0x1p-149, -2001.02 * 1.0000001 * 0x1p-149, 0.0);
 	r.dir = vec3_make(0x1p-24, 0x1p-23, 1.0);
-	fmask = accel_avx512_node_tests(&n, &r, 0.0, INFINITY, fe, &xmask, xe);
+	fmask = accel_kernels_of(RT_SIMD_AVX512)->node_tests(&n, &r, 0.0, INFINITY, fe, &xmask, xe);
 	assert_int_equal(xmask & 1, 1);
 	assert_true(fmask < 0 || ((fmask & 1) && fe[0] <= xe[0]));
 }
@@ -289,7 +290,7 @@ static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **
 	int xmask, i;
 
 	(void)state;
-	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	support_rng_seed(7);
 	random_node(&n, 1.0);
 	for (i = 0; i < 5; i++) {
@@ -297,7 +298,7 @@ static void test_float_box_tests_leave_rays_they_cannot_bound_to_doubles(void **
 
 		r.origin = origins[i];
 		r.dir = dirs[i];
-		assert_int_equal(accel_avx512_node_tests(&n, &r, t_mins[i], INFINITY, fe, &xmask, xe), -1);
+		assert_int_equal(accel_kernels_of(RT_SIMD_AVX512)->node_tests(&n, &r, t_mins[i], INFINITY, fe, &xmask, xe), -1);
 	}
 }
 
@@ -327,7 +328,7 @@ static void test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doub
 	int k;
 
 	(void)state;
-	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+	support_need_isa(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	support_rng_seed(13);
 	random_node4(&n4, 1.0);
 	for (k = 0; k < 60000; k++) {
@@ -364,7 +365,7 @@ static void test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doub
 		}
 		for (i = 0; i < ACCEL_PACKET; i++)
 			hold = hold && float_box_ray(&r[i], t_min[i]);
-		got = accel_avx512_rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
+		got = accel_kernels_of(RT_SIMD_AVX512)->rays_node_tests(&n4, r, t_min, t_max, fc, fe, xc, xe);
 		assert_true(got >= 0);
 		trials++;
 		floats += got;

@@ -122,7 +122,7 @@ static void check_lanes_with(const struct accel *a, const struct ray *r, int n,
 			if (one != hit[i] || memcmp(&ts, &t[i], sizeof(ts)) != 0) {
 				print_error("lane %d (ray %d of %d, %s, packets %d): alone %s at %.17g, "
 					    "in lanes %s at %.17g\n",
-					    i, ray_of[i], n, accel_walk_name(a), (int)a->rays,
+					    i, ray_of[i], n, accel_walk_name(a), (int)a->rays_set,
 					    one ? one->ops->keyword : "nothing", ts,
 					    hit[i] ? hit[i]->ops->keyword : "nothing", t[i]);
 				fail();
@@ -138,7 +138,7 @@ static void check_lanes_with(const struct accel *a, const struct ray *r, int n,
 		if (occ != (bool)(blocked >> i & 1)) {
 			print_error("lane %d (ray %d of %d, %s, packets %d): occluded alone %d, in "
 				    "lanes %d\n",
-				    i, ray_of[i], n, accel_walk_name(a), (int)a->rays, occ,
+				    i, ray_of[i], n, accel_walk_name(a), (int)a->rays_set, occ,
 				    (int)(blocked >> i & 1));
 			fail();
 		}
@@ -170,7 +170,7 @@ static void check_packet_with(const struct accel *a, const struct accel *base,
 		    memcmp(&ts, &tb, sizeof(ts)) != 0) {
 			print_error("ray %d of %d (%s, packets %d): alone %s at t = %.17g, occluded %d; in the "
 				    "packet %s at t = %.17g, occluded %d; base walk %s at %.17g\n",
-				    i, n, accel_walk_name(a), (int)a->rays,
+				    i, n, accel_walk_name(a), (int)a->rays_set,
 				    one ? one->ops->keyword : "nothing",
 				    ts, occ, hit[i] ? hit[i]->ops->keyword : "nothing", t[i],
 				    (int)(blocked >> i & 1), by_base ? by_base->ops->keyword : "nothing",

@@ -20,16 +20,16 @@ struct walk_set {
 
 static inline void walk_set_build(struct walk_set *w, const struct scene *s)
 {
-	static const enum accel_walk walks[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2,
-						 ACCEL_WALK_AVX512 };
+	static const enum rt_simd walks[] = { RT_SIMD_BASE, RT_SIMD_AVX2,
+						 RT_SIMD_AVX512 };
 	static bool reported;
 	struct diag d;
 	size_t k;
 
 	if (!reported) {
 		reported = true;
-		(void)support_isa_part(RT_SIMD_AVX2, accel_walk_usable(ACCEL_WALK_AVX2));
-		(void)support_isa_part(RT_SIMD_AVX512, accel_walk_usable(ACCEL_WALK_AVX512));
+		(void)support_isa_part(RT_SIMD_AVX2, accel_walk_usable(RT_SIMD_AVX2));
+		(void)support_isa_part(RT_SIMD_AVX512, accel_walk_usable(RT_SIMD_AVX512));
 	}
 	w->n = 0;
 	for (k = 0; k < sizeof(walks) / sizeof(walks[0]); k++) {
@@ -37,14 +37,14 @@ static inline void walk_set_build(struct walk_set *w, const struct scene *s)
 
 		if (!accel_walk_usable(walks[k]))
 			continue;
-		for (j = 0; j < (walks[k] == ACCEL_WALK_BASE ? 3u : 1u); j++) {
+		for (j = 0; j < (walks[k] == RT_SIMD_BASE ? 3u : 1u); j++) {
 			if (!accel_walk_usable(walks[j]))
 				continue;
 			assert_int_equal(accel_build_walk(s->shapes, s->n_shapes, 1, walks[k],
 							  &w->a[w->n], &d), 0);
-			assert_int_equal(w->a[w->n]->walk, walks[k]);
-			if (walks[k] == ACCEL_WALK_BASE)
-				w->a[w->n]->rays = walks[j];
+			assert_int_equal(w->a[w->n]->walk_set, walks[k]);
+			if (walks[k] == RT_SIMD_BASE)
+				accel_set_rays(w->a[w->n], walks[j]);
 			w->n++;
 		}
 	}

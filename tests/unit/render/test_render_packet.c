@@ -77,7 +77,7 @@ static struct scene *busy_scene(bool special, bool glass, bool in_plane)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	/* Big enough for the SIMD walks, under which packets run by
 	 * default, where the processor has them. */
-	if (accel_walk_usable(ACCEL_WALK_AVX2))
+	if (accel_walk_usable(RT_SIMD_AVX2))
 		assert_true(accel_packets_pay(s->accel));
 	return s;
 }
@@ -220,7 +220,7 @@ static void check_small_tree(int extra, bool spot)
 	static const struct material mirror = { { 0.9, 0.9, 1 }, 0.1, 0.4, 0.4, 0.6, 20, 0.0, 1.0 };
 	static const struct material glass = { { 0.9, 1, 0.9 }, 0.1, 0.3, 0.4, 0.2, 30, 0.7, 1.5 };
 	static const struct material clear = { { 0.8, 1, 0.9 }, 0.1, 0.3, 0.5, 0.0, 40, 0.8, 1.5 };
-	static const enum accel_walk lanes[] = { ACCEL_WALK_BASE, ACCEL_WALK_AVX2, ACCEL_WALK_AVX512 };
+	static const enum rt_simd lanes[] = { RT_SIMD_BASE, RT_SIMD_AVX2, RT_SIMD_AVX512 };
 	struct scene *s = support_parse(course_scene);
 	struct image one, other;
 	struct ray_counts n1, n;
@@ -256,15 +256,15 @@ static void check_small_tree(int extra, bool spot)
 	assert_int_equal(scene_set_recursion(s, 12, &d), 0);
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	assert_int_equal(s->accel->walk, ACCEL_WALK_BASE);
+	assert_int_equal(s->accel->walk_set, RT_SIMD_BASE);
 	render_with(s, "0", 1, 0, 0, 90, 90, &one, &n1);
 	assert_true(n1.reflection > n1.primary / 2 && n1.refraction > 0);
 	for (k = 0; k < sizeof(lanes) / sizeof(lanes[0]); k++) {
 		if (k > 0 && !support_isa_part(k == 1 ? RT_SIMD_AVX2 : RT_SIMD_AVX512,
 						accel_walk_usable(lanes[k])))
 			continue;
-		s->accel->rays = lanes[k];
-		assert_int_equal(accel_packets_scatter_pay(s->accel), lanes[k] != ACCEL_WALK_BASE);
+		accel_set_rays(s->accel, lanes[k]);
+		assert_int_equal(accel_packets_scatter_pay(s->accel), lanes[k] != RT_SIMD_BASE);
 		render_with(s, "1", k == 1 ? 3 : 1, 0, 0, 90, 90, &other, &n);
 		assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
 		assert_int_equal(n.primary, n1.primary);

@@ -1,6 +1,6 @@
-/* The hierarchy's walks over eight-child nodes with AVX-512 box tests,
- * compiled with -mavx512f (the Makefile, on x86) and chosen at the build
- * where the processor has it.  A node's eight children are tested in
+/* The AVX-512 set's walks, included by accel_kernels.c where it is
+ * compiled with -mavx512f -mfma: over eight-child nodes, chosen at the
+ * build where the processor has it.  A node's eight children are tested in
  * floats, eight to a 256-bit operation: half the work of the doubles the
  * other walks test in (the float boxes widened to double, eight to a
  * 512-bit operation, which a processor that splits those in two pays
@@ -18,18 +18,9 @@
  * walk's loops carry no second test.  Packets go a ray a vector lane
  * (accel_packet_rays.h over the eight-child nodes, sixteen rays to a
  * float operation), their last few rays in a node alone. */
-#include <math.h>
-#include <stdbool.h>
-#include <stdlib.h>
-#include <string.h>
-
-#include "accel/accel.h"
-#include "accel/accel_float_box.h"
-#include "accel/accel_slab.h"
-#include "accel/accel_tree.h"
-
-#if defined(__AVX512F__) && !defined(ACCEL_PORTABLE)
 #include <immintrin.h>
+
+#include "accel/accel_float_box.h"
 
 #define ACCEL_NODE struct bvh8_node
 #define ACCEL_W 8
@@ -228,7 +219,7 @@ static bool walk_avx512_occluded(const struct accel *a, const struct ray *r, dou
 }
 
 #ifdef RT_TEST_HOOKS
-int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
+static int walk_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
 			    double t_max, double float_entry[8], int *exact_mask,
 			    double exact_entry[8])
 {
@@ -308,19 +299,6 @@ static inline bool rays8_lane_occluded(const struct accel *a, size_t node,
 #define RAYS_WALK(name) rays8_avx512_##name
 #include "accel/accel_packet_rays.h"
 
-uint32_t accel_avx512_rays8_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-					   uint32_t active, const double *t_min,
-					   const double *t_max)
-{
-	return RAYS_WALK(occluded_lanes)(a, p, active, t_min, t_max);
-}
-
-void accel_avx512_rays8_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-					uint32_t active, const double *t_min, double *t_max,
-					const struct shape **hit)
-{
-	RAYS_WALK(intersect_lanes)(a, p, active, t_min, t_max, hit);
-}
 #undef RAYS_WALK
 #define RAYS_WALK(name) rays_avx512_##name
 
@@ -339,7 +317,7 @@ static uint32_t walk_avx512_occluded_packet(const struct accel *a, const struct 
 }
 
 #ifdef RT_TEST_HOOKS
-int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
+static int walk_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
 				 const double *t_min, const double *t_max, uint32_t float_child[4],
 				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
 				 double exact_entry[4][ACCEL_PACKET])
@@ -360,66 +338,16 @@ int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray 
 
 #endif
 
-#define ACCEL_COMPILED 1
-#elif defined(RT_TEST_HOOKS)
-int accel_avx512_node_tests(const struct bvh8_node *node, const struct ray *r, double t_min,
-			    double t_max, double float_entry[8], int *exact_mask,
-			    double exact_entry[8])
-{
-	(void)node;
-	(void)r;
-	(void)t_min;
-	(void)t_max;
-	(void)float_entry;
-	(void)exact_entry;
-	*exact_mask = 0;
-	return -1;
-}
 
-int accel_avx512_rays_node_tests(const struct bvh4_node *node, const struct ray *r,
-				 const double *t_min, const double *t_max, uint32_t float_child[4],
-				 double float_entry[4][ACCEL_PACKET], uint32_t exact_child[4],
-				 double exact_entry[4][ACCEL_PACKET])
-{
-	(void)node;
-	(void)r;
-	(void)t_min;
-	(void)t_max;
-	(void)float_child;
-	(void)float_entry;
-	(void)exact_child;
-	(void)exact_entry;
-	return -1;
+#define ACCEL_KERNELS_TABLE { \
+	.width = 8, \
+	.intersect = walk_avx512_intersect, \
+	.occluded = walk_avx512_occluded, \
+	.intersect_packet = walk_avx512_intersect_packet, \
+	.occluded_packet = walk_avx512_occluded_packet, \
+	.intersect_lanes = rays8_avx512_intersect_lanes, \
+	.occluded_lanes = rays8_avx512_occluded_lanes, \
+	.packets = "a ray a lane, few rays alone", \
+	.rays4 = ACCEL_KERNELS_RAYS4(rays_avx512), \
+	ACCEL_KERNELS_TEST_HOOKS(walk_avx512_node_tests, walk_avx512_rays_node_tests) \
 }
-#endif
-
-#define ACCEL_EXPORT(name) accel_avx512_##name
-#include "accel/accel_walk_export.h"
-
-#ifndef ACCEL_COMPILED
-/* Never called: accel_walk_usable keeps a build without AVX-512 off the
- * eight-child AVX-512 tree. */
-uint32_t accel_avx512_rays8_occluded_lanes(const struct accel *a, const struct ray_packet *p,
-					   uint32_t active, const double *t_min,
-					   const double *t_max)
-{
-	(void)a;
-	(void)p;
-	(void)active;
-	(void)t_min;
-	(void)t_max;
-	return 0;
-}
-
-void accel_avx512_rays8_intersect_lanes(const struct accel *a, const struct ray_packet *p,
-					uint32_t active, const double *t_min, double *t_max,
-					const struct shape **hit)
-{
-	(void)a;
-	(void)p;
-	(void)active;
-	(void)t_min;
-	(void)t_max;
-	(void)hit;
-}
-#endif

@@ -1,20 +1,10 @@
-/* The hierarchy's walks over eight-child nodes with AVX2 box tests,
- * compiled with -mavx2 (the Makefile, on x86) and chosen at the build
- * where the processor has it and not AVX-512.  Two four-lane operations
+/* The AVX2 set's walks, included by accel_kernels.c where it is compiled
+ * with -mavx2: over eight-child nodes, chosen at the build where the
+ * processor has AVX2 and not AVX-512.  Two four-lane operations
  * take a plane's slab distances of a node's eight children, in the base
  * walks' arithmetic lane by lane (float bounds widened to double, then
  * (b - o) * inv, no fused multiply-add), so every box test gives the base
  * walks' answer for that box to the bit, and the images are theirs. */
-#include <math.h>
-#include <stdbool.h>
-#include <stdlib.h>
-#include <string.h>
-
-#include "accel/accel.h"
-#include "accel/accel_slab.h"
-#include "accel/accel_tree.h"
-
-#if defined(__AVX2__) && !defined(ACCEL_PORTABLE)
 #include <immintrin.h>
 
 #define ACCEL_NODE struct bvh8_node
@@ -84,8 +74,14 @@ static inline int node_hits(const struct bvh8_node *node, const struct walk_ray 
 #define RAYS_WALK(name) rays_avx2_##name
 #include "accel/accel_packet_rays.h"
 
-#define ACCEL_COMPILED 1
-#endif
 
-#define ACCEL_EXPORT(name) accel_avx2_##name
-#include "accel/accel_walk_export.h"
+#define ACCEL_KERNELS_TABLE { \
+	.width = 8, \
+	.intersect = walk_avx2_intersect, \
+	.occluded = walk_avx2_occluded, \
+	.intersect_packet = walk_avx2_intersect_packet, \
+	.occluded_packet = walk_avx2_occluded_packet, \
+	.packets = "a child a lane", \
+	.rays4 = ACCEL_KERNELS_RAYS4(rays_avx2), \
+	ACCEL_KERNELS_TEST_HOOKS(NULL, NULL) \
+}
