@@ -1,4 +1,4 @@
-/* The float box tests of the AVX-512 walks (accel_walk_avx512.c, and the
+/* The float box tests of the AVX-512 walks (walk_avx512.h, and the
  * small trees' packets in accel_packet_rays.h): which rays they can
  * bound, and by how much they widen.  Private to src/accel/.
  *

@@ -1,4 +1,4 @@
-/* What the packet walks share (accel_packet.h, accel_packet_rays.c):
+/* What the packet walks share (accel_packet.h, accel_packet_rays.h):
  * the packet as the shapes take it, and the leaves' tests for a packet's
  * rays against their best so far. */
 #ifndef RT_ACCEL_PACKET_COMMON

@@ -7,7 +7,7 @@
  * costs little more than for one.  Written once over base/lanes.h: the
  * including file, compiled for one set of instructions, defines
  * RAYS_WALK(name), the names the walks get.  Each lane does the single
- * walk's arithmetic on the same float boxes (accel.c: entry = max(t_min,
+ * walk's arithmetic on the same float boxes (walk_base.h: entry = max(t_min,
  * the near plane's t), exit = min(t_max, the far plane's t), a NaN
  * constraining nothing), or in AVX-512 the float tests that enter every
  * box it enters, no later (accel_float_box.h), and a shape is tested for

@@ -1,5 +1,5 @@
 /* What every box test of the hierarchy's walks needs of a ray (the walks
- * of accel.c and accel_walk_avx2.c); private to src/accel/. */
+ * of walk_base.h, walk_avx2.h and walk_avx512.h); private to src/accel/. */
 #ifndef RT_ACCEL_SLAB_H
 #define RT_ACCEL_SLAB_H
 

@@ -1,6 +1,5 @@
 /* The hierarchy's layout, shared by its build (accel_build.c,
- * accel_collapse.c) and its walks (accel.c, accel_walk_avx2.c,
- * accel_walk_avx512.c) and
+ * accel_collapse.c) and its walks (accel.c, accel_kernels.c) and
  * private to them.  The build makes a binary tree (struct bvh_node: the
  * float boxes of two children, rounded outwards so that they never cut
  * off a hit), which accel_collapse.c turns into the tree the walks use:

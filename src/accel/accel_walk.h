@@ -1,9 +1,9 @@
 /* The hierarchy's walks, nearest hit and any hit, written once for each
  * set of box tests: the file that includes this defines ACCEL_NODE and
  * ACCEL_W, the node type and its width, struct walk_ray, walk_ray_init,
- * node_entries and node_hits (accel.c: SSE2 or plain C over four
- * children; accel_walk_avx2.c and accel_walk_avx512.c: AVX2 and AVX-512
- * over eight) and ACCEL_WALK(name), the names the walks get.
+ * node_entries and node_hits (walk_base.h: SSE2 or plain C over four
+ * children; walk_avx2.h and walk_avx512.h: AVX2 and AVX-512 over eight,
+ * each compiled in accel_kernels.c for its set) and ACCEL_WALK(name), the names the walks get.
  *
  * The nearest hit is the nearest t, and on an exact tie the shape with
  * the lower key (accel_tree.h): a shape that ties the best so far is

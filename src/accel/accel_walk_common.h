@@ -1,5 +1,5 @@
 /* What every walk of the hierarchy shares, whatever its node and its box
- * tests (accel_walk.h, accel_packet.h, accel_packet_rays.c): the
+ * tests (accel_walk.h, accel_packet.h, accel_packet_rays.h): the
  * prefetch, the best hit so far and the tie rule, the leaves' tests and
  * the children's order. */
 #ifndef RT_ACCEL_WALK_COMMON

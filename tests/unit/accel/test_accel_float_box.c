@@ -1,5 +1,5 @@
 /* The AVX-512 walk's float box tests against the double ones every other
- * walk does (accel_walk_avx512.c): wherever the double test enters a
+ * walk does (accel/walk_avx512.h): wherever the double test enters a
  * child, the float test must enter it too, at an entry no later; else
  * the walks could meet different shapes and the images part.  Random
  * nodes and rays at every scale, and the hard cases on purpose: origins
