@@ -371,6 +371,7 @@ static int pov_write_shadow_twins(FILE *out, const struct scene *s, const struct
 	return 0;
 }
 
+/* Long: the POV-Ray file's sections in their order. */
 int pov_export_scene(FILE *out, const struct scene *s, const struct camera *cam,
 		     const struct pov_options *opt, struct diag *d)
 {

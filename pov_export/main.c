@@ -267,6 +267,8 @@ static void remove_textures(char *paths[2])
 			remove(paths[k]);
 }
 
+/* Long: scene2pov's steps in order (load, export, write, the files' cleanup)
+ * with one exit for each. */
 static int run(struct options *o)
 {
 	struct scene *s = NULL;

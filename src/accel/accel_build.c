@@ -326,6 +326,8 @@ int accel_build(struct shape *const *shapes, size_t n_shapes, int threads, struc
 	return accel_build_walk(shapes, n_shapes, threads, choose_walk(n_shapes), out, d);
 }
 
+/* Long: the build's phases (refs, binary tree, collapse, the shapes' order)
+ * in sequence with one exit that frees what was made. */
 int accel_build_walk(struct shape *const *shapes, size_t n_shapes, int threads,
 		     enum rt_simd walk, struct accel **out, struct diag *d)
 {

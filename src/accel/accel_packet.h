@@ -19,6 +19,9 @@
 
 #include "accel/accel_packet_common.h"
 
+/* Long: a walk's loop: the stack, the children's tests for each ray and the
+ * leaves' packet tests share the loop's state, which the single walk keeps
+ * whole too. */
 static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray *r, int n,
 					 const double *t_min, double *t_max,
 					 const struct shape **hit)
@@ -102,7 +105,8 @@ static void ACCEL_WALK(intersect_packet)(const struct accel *a, const struct ray
 }
 
 /* Whether anything blocks each ray in (t_min[i], t_max[i]): the mask of
- * the rays blocked. */
+ * the rays blocked.
+ * Long: a walk's loop, as intersect_packet's. */
 static uint32_t ACCEL_WALK(occluded_packet)(const struct accel *a, const struct ray *r, int n,
 					    const double *t_min, const double *t_max)
 {

@@ -168,7 +168,9 @@ RAYS_WALK(node_test)(const RAYS_NODE *nd, const struct packet_rays *v, uint32_t 
 }
 
 /* The nearest hits of v's rays of `all` (not 0), loaded, from t_max[i]
- * down. */
+ * down.
+ * Long: a walk's loop over the stack, the lanes' box tests and the leaves,
+ * whose state the loop shares. */
 static void RAYS_WALK(intersect_rays)(const struct accel *a, const struct packet_rays *v,
 				      uint32_t all, double *t_max, const struct shape **hit)
 {
@@ -285,7 +287,8 @@ static void RAYS_WALK(intersect_lanes)(const struct accel *a, const struct ray_p
 }
 
 /* Which rays of `all` anything blocks in (t_min, t_far[lane]): v's
- * rays, loaded. */
+ * rays, loaded.
+ * Long: a walk's loop, as intersect_rays'. */
 static uint32_t RAYS_WALK(occluded_rays)(const struct accel *a, const struct packet_rays *v,
 					 uint32_t all, const double *t_far)
 {

@@ -75,6 +75,7 @@ static void check_usage(bool grade)
 		       "3 it differs, 1 the scene or the image cannot be read, 2 bad command line.\n");
 }
 
+/* Long: compare's and grade's options, a case each in one switch. */
 static int check_option(struct check_options *o, int c, const char *arg)
 {
 	struct diag d;
@@ -157,6 +158,8 @@ static bool check_looks_like_image(const char *path)
 	       (n >= 2 && b[0] == 'P' && (b[1] == '3' || b[1] == '6'));
 }
 
+/* Long: the two commands' option tables and getopt's loop, then the operands'
+ * checks, as getopt wants them in one place. */
 int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 {
 	static const struct option compare_longopts[] = {

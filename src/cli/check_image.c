@@ -251,7 +251,9 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
  * the given one, at the given camera).  The refitted image is
  * measured on every pixel, the ranks with the ties left out: a refit
  * must beat them with that handicap, so it moves the camera only when it
- * is clearly better. */
+ * is clearly better.
+ * Long: the causes tried in turn, each fitted, rendered and judged, and the
+ * best kept, with one exit that frees the images. */
 #define CHECK_REFIT_CAUSES 3
 #define CHECK_REFIT_GAIN 1.0
 
@@ -373,7 +375,9 @@ int check_image_data(struct check_reference *ref, const char *name, const unsign
 	return check_image_loaded(ref, res, rc, d);
 }
 
-/* The check of res->image, read. */
+/* The check of res->image, read.
+ * Long: the check's phases (given camera, causes, fit, causes at the found
+ * camera, objects) in order, each a call. */
 static int check_image_read(struct check_reference *ref, struct check_result *res,
 			    struct diag *d)
 {

@@ -72,6 +72,7 @@ static void compare_json_best(const struct check_reference *ref, const struct ch
 	       res->verdict == CHECK_MATCH || res->explained == CHECK_EXPLAINED ? "true" : "false");
 }
 
+/* Long: the JSON document's fields in their order, a writer call each. */
 static void compare_json(const struct check_options *o, const struct check_reference *ref,
 			 const struct check_result *res, const char *diagnosis)
 {
@@ -171,6 +172,7 @@ static void print_psnr(double psnr)
 		printf("%8.2f dB", psnr);
 }
 
+/* Long: the text report's lines in their order. */
 static void compare_text(const struct check_options *o, const struct check_reference *ref,
 			 const struct check_result *res, const char *diagnosis)
 {

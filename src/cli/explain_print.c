@@ -112,6 +112,7 @@ static void json_child(FILE *out, const char *name, long id, double k, struct co
 	fputc('}', out);
 }
 
+/* Long: one ray's JSON object, its fields in their order. */
 static void json_ray(FILE *out, const struct scene *s, const struct explanation *e, size_t id)
 {
 	const struct explain_ray *r = &e->rays[id];

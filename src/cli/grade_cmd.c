@@ -215,6 +215,8 @@ static void grade_class_free(struct grade_class *c)
 		check_reference_free(&c->refs[s]);
 }
 
+/* Long: the command in its order (options, references, the class's images,
+ * the summary, the files) with the cleanup of each step on every exit. */
 int grade_main(int argc, char **argv)
 {
 	struct check_options o;

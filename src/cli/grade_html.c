@@ -113,6 +113,8 @@ static void html_th(FILE *f, const char *name)
 	fprintf(f, "<th onclick=\"sortBy(this)\" title=\"sort\">%s</th>", name);
 }
 
+/* Long: one submission's section of the report, element after element, as it
+ * reads on the page. */
 static int html_submission(FILE *f, const struct grade_class *c, size_t i)
 {
 	const struct grade_row *row = &c->rows[i];
@@ -263,6 +265,7 @@ static void html_students(FILE *f, const struct grade_class *c)
 	fputs("</tbody></table>\n", f);
 }
 
+/* Long: the report's page, head, table and sections, as it reads. */
 static int html_fill(void *ctx, FILE *f, struct diag *d)
 {
 	const struct grade_class *c = ctx;

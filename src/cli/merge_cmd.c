@@ -84,7 +84,8 @@ static int merge_check_plugins(const char *first, const char *const *files, int 
 	return 0;
 }
 
-/* argv[0] is "merge". */
+/* argv[0] is "merge".
+ * Long: the merge command's steps in order with one cleanup. */
 int merge_main(int argc, char **argv)
 {
 	static const struct option longopts[] = {

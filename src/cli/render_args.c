@@ -221,7 +221,8 @@ static int int_option(const char *name, const char *arg, long lo, long hi, int *
 }
 
 /* One option of the render's own (not a shared scene option): 0, or the
- * status to stop with.  One case per option, as getopt_long reports them. */
+ * status to stop with.  One case per option, as getopt_long reports them.
+ * Long: the render's options, a case each in one switch. */
 static int render_option(void *ctx, int c, const char *arg)
 {
 	struct options *o = ctx;

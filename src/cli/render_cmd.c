@@ -88,7 +88,9 @@ struct run_times {
 	struct settings settings;	/* of the last image */
 };
 
-/* Renders the image (or the region) seen by cam and writes it to name. */
+/* Renders the image (or the region) seen by cam and writes it to name.
+ * Long: one render's steps (job, image, render, write, stats) with one exit
+ * that frees them. */
 static int render_one(const struct options *o, const struct scene *s, const struct camera *cam,
 		      const struct camera_params *params, const char *name, struct run_times *t,
 		      struct diag *d)

@@ -198,6 +198,7 @@ static int cli_parse_glass(struct cli_scene *o, const char *arg, struct diag *d)
 	}
 }
 
+/* Long: the shared options' one switch, a case of two or three lines each. */
 int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag *d)
 {
 	double v[2];
@@ -307,6 +308,8 @@ static void cli_scene_resolve(struct cli_scene *o, const struct scene_view *v)
 	o->floor_mat = v->floor_mat;
 }
 
+/* Long: the load's steps in order (plugins, the file, the overrides, the
+ * floor, the camera), each failing to one exit. */
 int cli_scene_load(struct cli_scene *o, const char *path, diag_note_fn *note, void *note_ctx,
 		   struct scene **out, struct camera *cam, struct diag *d)
 {

@@ -186,6 +186,7 @@ void grade_variant_plain(const struct grade_job *job, struct grade_variant *v)
 	v->settings = job->settings;
 }
 
+/* Long: the causes' forms, a case each in one switch. */
 bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 		      struct grade_variant *v)
 {

@@ -122,7 +122,10 @@ static int fit_stage_level(const struct fit_stage *st, const struct image *sub, 
 
 /* The fit from stage `first` on: from the starts' coarse search (first
  * 0), or refined from starts[0] alone; the variant's colours (NULL: the
- * reference's) fitted. */
+ * reference's) fitted.
+ * Long: one loop over the stages carries the hypotheses, their scores and
+ * pivots from level to level; cut up, that state would travel through every
+ * part. */
 static int fit_run(const struct grade_job *job, const struct camera_params *starts, int n_starts,
 		   const struct image *sub, const struct grade_variant *variant, int first,
 		   struct grade_fit *out, struct diag *d)

@@ -30,7 +30,9 @@ struct vec3 fit_scene_centre(const struct scene *s)
  * by the floor, only by the objects, which are small.  So each such
  * neighbour of x, up to FIT_ALIAS_REACH cells each way along both
  * diagonals, is scored, turned to keep the scene's middle where x sees
- * it and zoomed to keep its size, and x moves to the best. */
+ * it and zoomed to keep its size, and x moves to the best.
+ * Long: the aliases made both ways (as they are, and turned and zoomed) in
+ * one loop over the cells, then the best picked from the same arrays. */
 #define FIT_ALIAS_REACH 4
 
 int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][FIT_DIM], double *fout,

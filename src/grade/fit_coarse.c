@@ -177,6 +177,8 @@ static void coarse_camera(const struct camera *start, struct vec3 e, double yaw,
 	p->fov_deg = fov;
 }
 
+/* Long: one eye's wide render warped to every orientation of the grid and
+ * scored, in one loop over the orientations. */
 static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce, float *img,
 			      float *tmp)
 {
@@ -380,6 +382,8 @@ static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
 	return n;
 }
 
+/* Long: the coarse search's two looks (the grid of eyes, then around the
+ * best) and the merge of their candidates, over one work struct. */
 int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
 		      const struct image *sub, double radius, double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)

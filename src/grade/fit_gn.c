@@ -91,7 +91,10 @@ static bool fit_solve(int n, double a[FIT_DIM][FIT_DIM + 1], double *x)
  * Jacobian from the render's own gradient and the flow of its points
  * (fit_level_jacobian: no extra renders); each iteration tries
  * FIT_LM_TRIALS dampings at once and goes on from the best, whose render
- * gives the next Jacobian.  Returns the score at x, which it moves. */
+ * gives the next Jacobian.  Returns the score at x, which it moves.
+ * Long: an iteration's Jacobian, normal equations, trials and acceptance
+ * share the level's buffers and the damping; apart they would pass all of
+ * them along. */
 double fit_gn(struct fit_batch *b, double *x, double pixel_deg, double *pivot_out, int iterations,
 	      long *evals, struct diag *d, int *rc)
 {

@@ -307,7 +307,9 @@ void fit_blur(float *cells, float *tmp, int w, int h, double sigma)
 	fit_blur_pass(tmp, cells, w, h, k, r, false);
 }
 
-/* The rays a level's cells are made of, RT_FIT_RAYS at a time. */
+/* The rays a level's cells are made of, RT_FIT_RAYS at a time.
+ * Long: the level's rays made, traced and summed into cells in batches, the
+ * three sharing the batch's arrays. */
 #define FIT_RAYS 64
 
 int fit_level_render(const struct fit_level *l, const struct grade_job *job,

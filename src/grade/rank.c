@@ -213,7 +213,9 @@ static const enum grade_cause grade_transform_pairs[][2] = {
 /* The singles a pair is made of: the best GRADE_PAIR_FROM of them. */
 #define GRADE_PAIR_FROM 5
 /* A pair is listed only this much nearer than the better of its two
- * causes alone: a second cause that changes nearly nothing is no pair. */
+ * causes alone: a second cause that changes nearly nothing is no pair.
+ * Long: the pairs made from the best singles, rendered and kept when clearly
+ * nearer, over the ranking's one to-do list. */
 #define GRADE_PAIR_GAIN 1.0
 
 static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, size_t *n,
@@ -291,6 +293,9 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 	return 0;
 }
 
+/* Long: the ranking's phases (sample, singles, pairs, full renders, order) in
+ * sequence over one struct grade_ranking, each a call; what is left is their
+ * bookkeeping. */
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		      const struct image *tref, const struct image *sub, const uint8_t *skip,
 		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d)

@@ -23,6 +23,8 @@ int camera_init(struct camera *c, const struct camera_params *p, int size, struc
 	return camera_init_rect(c, p, size, size, d);
 }
 
+/* Long: the camera's checks and its basis, each a named step of scene-
+ * format.md's camera. */
 int camera_init_rect(struct camera *c, const struct camera_params *p, int width, int height,
 		     struct diag *d)
 {

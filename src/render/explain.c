@@ -124,7 +124,9 @@ static void explain_blocker(const struct scene *s, const struct ray *shadow, dou
 }
 
 /* One light at the hit h, as render_direct (full: render_direct_full)
- * treats it: its term in *term (black unless lit), recorded in *l. */
+ * treats it: its term in *term (black unless lit), recorded in *l.
+ * Long: one light's term with each quantity recorded, in render_direct's
+ * order. */
 static void explain_one_light(const struct scene *s, const struct light *lt,
 			      const struct render_point *h, bool full, struct explain_light *l,
 			      struct color *term)
@@ -192,7 +194,9 @@ static struct color explain_trace(struct explainer *x, const struct ray *r, int 
 				  const struct glass_stack *glass, double weight, long parent,
 				  enum explain_ray_kind kind);
 
-/* The sum at the hit of ray `id` (render_shade_from). */
+/* The sum at the hit of ray `id` (render_shade_from).
+ * Long: render_trace's sum again, each step recorded, in render_trace's
+ * order. */
 static struct color explain_shade(struct explainer *x, long id, const struct ray *r, int level,
 				  const struct glass_stack *glass, double weight,
 				  const struct render_point *h)

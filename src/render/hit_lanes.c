@@ -8,6 +8,8 @@ static const struct hit_lanes_set *chosen(void)
 	return &render_kernels()->hit;
 }
 
+/* Long: the hits' lanes filled shape by shape, then the shared vector part:
+ * one pass over the packet's lanes. */
 void hit_lanes_fill(const struct ray_packet *r, uint32_t active, const double *t,
 		    const struct shape *const *hit, struct hit_lanes *out)
 {

@@ -238,6 +238,8 @@ void render_job_init(struct render_job *job, const struct scene *s, const struct
 	job->y1 = cam->height;
 }
 
+/* Long: the image loop's set-up, its threads and their join, and the band
+ * writer's hand-over, which share the one render_shared. */
 int render_image(const struct render_job *job, struct image *img,
 		 struct ray_counts *counts, struct diag *d)
 {

@@ -100,7 +100,9 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
  * reflections (the mirrors' that are not glass) in one packet more, a
  * level down, each in its hit's lane.  Lane i's rays are trees[i]'s, of
  * weight weight[i] in their pixel (weight NULL: a scene without glass,
- * whose lanes share trees[0], which cuts nothing). */
+ * whose lanes share trees[0], which cuts nothing).
+ * Long: a packet's shading in the order of the single rays' (ambient, lights,
+ * reflection), over the lanes' shared arrays. */
 static void shade_packet(const struct render_job *job, const struct ray_packet *r,
 			 uint32_t active, int level, struct render_tree *trees,
 			 const double *weight, struct color *out)
@@ -191,6 +193,8 @@ void render_rays_packets(const struct render_job *job, const struct ray *r, int 
 	}
 }
 
+/* Long: the block's loop over its 4x4 packets: primary rays, their trees and
+ * the shading in one pass, whose locals are the packet's lanes. */
 void render_block_packets(const struct render_job *job, struct image *img, int x0, int y0,
 			  int x1, int y1, struct render_tree *tree)
 {

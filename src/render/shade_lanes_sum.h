@@ -8,6 +8,9 @@
 #include "base/lanes.h"
 #include "render/shade_lanes.h"
 
+/* Long: render_direct, render_phong and render_shade_from in vector form,
+ * step for step in their order, which is what keeps the bits equal; split,
+ * the steps would no longer read against those lines. */
 static uint64_t SHADE_LANES_FN(sum)(const struct shade_lanes *in,
 				    const struct render_shadows *pre,
 				    const struct light *lights, size_t n_lights,

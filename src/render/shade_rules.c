@@ -154,7 +154,9 @@ static const struct shape *rules_intersect(const struct scene *s, const struct s
 	return hit;
 }
 
-/* shade.c's render_trace_in, with the rules. */
+/* shade.c's render_trace_in, with the rules.
+ * Long: render_trace's sum with each rule's hook where the rule bends it, in
+ * render_trace's order, so that the two read side by side. */
 static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
 				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
 				   int level, struct render_tree *tree, const struct glass_stack *glass,

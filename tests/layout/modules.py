@@ -6,7 +6,8 @@ references that #includes do not show (a function defined in one folder and
 called from another, read from the objects with nm).  Fails on a cycle
 between folders, on a cycle between the files of a folder (file a.c uses
 b.c when it calls a function or reads data b.c defines), on a C file of
-more than 500 lines, on a library module that includes program code
+more than 500 lines, on a function of more than 60 without a "Long:"
+reason in the comment above it, on a library module that includes program code
 (src/cli) or getopt, and on an installed header that includes anything
 private.  Prints the graph.  Usage: modules.py [BUILD_DIR]"""
 import os, re, subprocess, sys
@@ -133,6 +134,43 @@ for top in ("src", "include", "pov_export", "viewer", "plugins"):
                     failures.append("%s has %d lines, over the house's %d" % (
                         os.path.relpath(path, root), lines, MAX_LINES))
 
+# A function over 60 lines says why above it: a "Long:" in the comment
+# that sits on it (#define lines between them allowed).
+MAX_FUNCTION = 60
+def long_functions(path):
+    lines = open(path, encoding="utf-8").read().split("\n")
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("{") and i > 0:
+            start = i - 1
+            while start > 0 and lines[start][:1] in ("\t", " "):
+                start -= 1
+            end = i + 1
+            while end < len(lines) and not lines[end].startswith("}"):
+                end += 1
+            if end - start + 1 > MAX_FUNCTION:
+                above = start - 1
+                while above >= 0 and (lines[above].startswith("#define") or not lines[above].strip()):
+                    above -= 1
+                comment = []
+                while above >= 0 and (lines[above].startswith((" *", "/*"))):
+                    comment.append(lines[above])
+                    if lines[above].startswith("/*"):
+                        break
+                    above -= 1
+                if not any("Long:" in c for c in comment):
+                    yield start + 1, end - start + 1, lines[start].strip()
+            i = end
+        i += 1
+for top in ("src", "pov_export", "viewer", "plugins", "web"):
+    for dirpath, _, names in os.walk(os.path.join(root, top)):
+        for name in sorted(names):
+            if name.endswith((".c", ".h")):
+                path = os.path.join(dirpath, name)
+                for line, n, sig in long_functions(path):
+                    failures.append("%s:%d: a function of %d lines with no \"Long:\" reason "
+                                    "above it: %s" % (os.path.relpath(path, root), line, n, sig[:60]))
+
 # Installed headers include only the C library and each other.
 pubdir = os.path.join(root, "include", "whitted")
 public = set(os.listdir(pubdir))
@@ -157,8 +195,8 @@ for m in order:
     print("layout: %-10s uses %s" % (m, ", ".join(sorted(edges[m])) or "-"))
 for f in failures:
     print("layout: FAIL: " + f)
-# Six checks: no getopt in the library, no library module on src/cli, no
-# cycle between folders, none between files, no file over 500 lines,
-# installed headers self-contained.
-print("layout: %d passed, %d failed, 0 skipped" % (0 if failures else 6, len(failures)))
+# Seven checks: no getopt in the library, no library module on src/cli,
+# no cycle between folders, none between files, no file over 500 lines,
+# no long function without its reason, installed headers self-contained.
+print("layout: %d passed, %d failed, 0 skipped" % (0 if failures else 7, len(failures)))
 sys.exit(1 if failures else 0)
