@@ -88,6 +88,9 @@ const struct grade_cause_text *grade_cause_text(enum grade_cause c, enum clamp_m
 /* True for the causes that transform the reference's pixels (a mirror,
  * a flip, a transposition, red and blue swapped) rather than render it. */
 bool grade_cause_is_transform(enum grade_cause c);
+/* True for those of them that move the pixels about (a mirror, a flip, a
+ * transposition): another camera may explain such an image as well. */
+bool grade_cause_moves_pixels(enum grade_cause c);
 
 /* What a reference is rendered with. */
 struct grade_job {

@@ -42,6 +42,14 @@ void image_free(struct image *img);
 enum image_format image_format_from_path(const char *path);
 /* "png", "bmp", "ppm" to the format, or UNKNOWN. */
 enum image_format image_format_from_name(const char *name);
+/* The format's name ("png"; "?" for UNKNOWN): --format's word, the file
+ * extension, POV-Ray's image_map keyword. */
+const char *image_format_name(enum image_format fmt);
+/* The formats' names for a message, each after prefix ("." for the
+ * extensions): "png, bmp or ppm"; returns buf. */
+const char *image_format_names(char *buf, size_t size, const char *prefix);
+/* The format whose signature bytes start data, or UNKNOWN. */
+enum image_format image_format_of_bytes(const unsigned char *data, size_t len);
 
 /* Writers to an open stream; they report I/O errors through the diag. */
 int image_write_png(const struct image *img, FILE *f, struct diag *d);

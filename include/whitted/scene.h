@@ -35,12 +35,22 @@ enum scene_dialect {
 	RT_DIALECT_SPOT,
 	RT_DIALECT_PYRAMID,
 	RT_DIALECT_NEARFAR,
+	RT_DIALECT_COUNT
 };
 #define RT_DIALECT_BIT(d) (1u << (d))
+/* The dialects of the course's first grammar (parse_classic.c). */
+#define RT_DIALECT_CLASSIC_FAMILY \
+	(RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) | \
+	 RT_DIALECT_BIT(RT_DIALECT_PYRAMID))
 
 /* "auto", "classic", "spot", "pyramid", "nearfar"; NULL for a value
  * outside the enumeration. */
 const char *scene_dialect_name(enum scene_dialect d);
+/* The dialect of that name, or -1. */
+int scene_dialect_from_name(const char *name);
+/* Every dialect's name for a message: "auto, classic, spot, pyramid or
+ * nearfar"; returns buf. */
+const char *scene_dialect_names(char *buf, size_t size);
 
 /* A light: a point light, or a spotlight (spot) that lights a point P only
  * when the angle between P - pos and axis is at most cutoff_deg, a hard

@@ -94,8 +94,11 @@ static int check_option(struct check_options *o, int c, const char *arg)
 			break;
 		if (arg[0] == '\0')
 			return tool_usage_error("--diff: expected a file name, found ''");
-		if (image_format_from_path(arg) == RT_FORMAT_UNKNOWN)
-			return tool_usage_error("--diff: cannot tell the format of '%s' (use .png, .bmp or .ppm)", arg);
+		if (image_format_from_path(arg) == RT_FORMAT_UNKNOWN) {
+			char ext[64];
+			return tool_usage_error("--diff: cannot tell the format of '%s' (use %s)", arg,
+						image_format_names(ext, sizeof(ext), "."));
+		}
 		o->diff_path = arg;
 		return 0;
 	case OPT_JSON:

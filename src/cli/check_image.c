@@ -89,7 +89,8 @@ static void check_explain(struct check_result *res, const struct grade_figures *
 static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n)
 {
 	const struct grade_rank *r = &ranks[0];
-	bool a = r->cause <= RT_CAUSE_TRANSPOSED, b = r->also != RT_CAUSE_NONE && r->also <= RT_CAUSE_TRANSPOSED;
+	bool a = grade_cause_moves_pixels(r->cause);
+	bool b = r->also != RT_CAUSE_NONE && grade_cause_moves_pixels(r->also);
 
 	return n > 0 && (a || b);
 }

@@ -114,8 +114,11 @@ int merge_main(int argc, char **argv)
 			break;
 		case OPT_FORMAT:
 			format = image_format_from_name(optarg);
-			if (format == RT_FORMAT_UNKNOWN)
-				return tool_usage_error("--format: expected png, bmp or ppm, found '%s'", optarg);
+			if (format == RT_FORMAT_UNKNOWN) {
+				char names[64];
+				return tool_usage_error("--format: expected %s, found '%s'",
+							image_format_names(names, sizeof(names), ""), optarg);
+			}
 			break;
 		case OPT_PLUGIN:
 			if (optarg[0] == '\0')
@@ -139,9 +142,11 @@ int merge_main(int argc, char **argv)
 		return tool_usage_error("%s", "no tiles given");
 	if (format == RT_FORMAT_UNKNOWN) {
 		format = image_format_from_path(output);
-		if (format == RT_FORMAT_UNKNOWN)
-			return tool_usage_error("--output: cannot tell the format of '%s' (use .png, .bmp or .ppm, or --format)",
-						 output);
+		if (format == RT_FORMAT_UNKNOWN) {
+			char ext[64];
+			return tool_usage_error("--output: cannot tell the format of '%s' (use %s, or --format)",
+						output, image_format_names(ext, sizeof(ext), "."));
+		}
 	}
 	diag_clear(&d);
 	if ((rc = cli_plugins_load(plugins, n_plugins, tool_print_note, NULL, &d)) < 0 ||

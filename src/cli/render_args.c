@@ -177,9 +177,11 @@ static int resolve_output(struct options *o)
 	}
 	if (o->format == RT_FORMAT_UNKNOWN) {
 		o->format = image_format_from_path(o->output);
-		if (o->format == RT_FORMAT_UNKNOWN)
-			return tool_usage_error("--output: cannot tell the format of '%s' (use .png, .bmp or .ppm, or --format)",
-					   o->output);
+		if (o->format == RT_FORMAT_UNKNOWN) {
+			char ext[64];
+			return tool_usage_error("--output: cannot tell the format of '%s' (use %s, or --format)",
+						o->output, image_format_names(ext, sizeof(ext), "."));
+		}
 	}
 	if ((o->region || o->grid_cols) && o->format != RT_FORMAT_PNG)
 		return tool_usage_error("--region, --grid: tiles are PNG files (their place is kept in PNG chunks), found '%s'",
@@ -237,8 +239,11 @@ static int render_option(void *ctx, int c, const char *arg)
 		return 0;
 	case OPT_FORMAT:
 		o->format = image_format_from_name(arg);
-		if (o->format == RT_FORMAT_UNKNOWN)
-			return tool_usage_error("--format: expected png, bmp or ppm, found '%s'", arg);
+		if (o->format == RT_FORMAT_UNKNOWN) {
+			char names[64];
+			return tool_usage_error("--format: expected %s, found '%s'",
+						image_format_names(names, sizeof(names), ""), arg);
+		}
 		return 0;
 	case 'j':
 		if (int_option("--threads", arg, 1, 64, &o->threads) != 0)

@@ -74,23 +74,18 @@ static int cli_parse_vec3(const char *opt, const char *arg, struct vec3 *out, st
 	return rc;
 }
 
-/* Long: one case per shared option, as getopt_long reports them. */
+/* --dialect's word: a dialect's name (scene.h's table). */
 static int cli_parse_dialect(const char *arg, enum scene_dialect *out, struct diag *d)
 {
-	static const enum scene_dialect all[] = {
-		RT_DIALECT_AUTO, RT_DIALECT_CLASSIC, RT_DIALECT_SPOT, RT_DIALECT_PYRAMID,
-		RT_DIALECT_NEARFAR,
-	};
-	size_t i;
+	int found = scene_dialect_from_name(arg);
+	char names[80];
 
-	for (i = 0; i < sizeof(all) / sizeof(all[0]); i++) {
-		if (strcmp(arg, scene_dialect_name(all[i])) == 0) {
-			*out = all[i];
-			return 0;
-		}
+	if (found >= 0) {
+		*out = (enum scene_dialect)found;
+		return 0;
 	}
-	return diag_fail(d, RT_E_INVALID,
-			 "--dialect: expected auto, classic, spot, pyramid or nearfar, found '%s'", arg);
+	return diag_fail(d, RT_E_INVALID, "--dialect: expected %s, found '%s'",
+			 scene_dialect_names(names, sizeof(names)), arg);
 }
 
 /* "WHITE[,BLACK]": either may be empty, not both; at most one comma. */

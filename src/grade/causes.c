@@ -8,64 +8,81 @@
 #include "grade/grade_impl.h"
 #include "scene/scene_impl.h"
 
-static const struct grade_cause_text grade_texts[RT_CAUSE_COUNT] = {
-	[RT_CAUSE_MIRRORED] = { "mirrored", "the image mirrored left-right",
+/* The causes, one row each: their texts, the reference's pixels moved
+ * (a transform's map) and the shading rule broken; the rest of a cause
+ * (its forms) is grade_variant_of's.  rank.c, the programs' words, the
+ * JSON and the HTML read them from here. */
+static const struct grade_cause_row {
+	struct grade_cause_text text;
+	unsigned map;		/* GRADE_MAP_*: a transform of the reference; 0 for a render */
+	unsigned rule;		/* RT_RULE_*: the rule it breaks, rendered; 0 for none */
+} grade_causes[RT_CAUSE_COUNT] = {
+	[RT_CAUSE_MIRRORED] = { .text = { "mirrored", "the image mirrored left-right",
 		"the camera's right vector has the wrong sign: right = forward x up, and pixel i "
 		"(from the left) goes to column i" },
-	[RT_CAUSE_UPSIDE_DOWN] = { "upside-down", "the image upside down",
+		.map = GRADE_MAP_MIRROR },
+	[RT_CAUSE_UPSIDE_DOWN] = { .text = { "upside-down", "the image upside down",
 		"BMP rows go bottom-up: write image row j to file row height-1-j (or the up "
 		"vector's sign is wrong)" },
-	[RT_CAUSE_TRANSPOSED] = { "transposed", "i and j swapped (the image transposed)",
+		.map = GRADE_MAP_FLIP },
+	[RT_CAUSE_TRANSPOSED] = { .text = { "transposed", "i and j swapped (the image transposed)",
 		"pixel (i, j) is column i, row j: swap i and j where the ray is built or the "
 		"pixel is stored" },
-	[RT_CAUSE_RED_BLUE] = { "red-blue", "red and blue swapped",
+		.map = GRADE_MAP_TRANSPOSE },
+	[RT_CAUSE_RED_BLUE] = { .text = { "red-blue", "red and blue swapped",
 		"BMP stores each pixel as blue, green, red: write the bytes in that order" },
-	[RT_CAUSE_GAMMA] = { "gamma", "gamma encoding applied",
-		"write round(255 c) with no gamma encoding: the assignment's colours are linear" },
-	[RT_CAUSE_WHITE_SPECULAR] = { "white-highlight", "the highlight left white",
+		.map = GRADE_MAP_RED_BLUE },
+	[RT_CAUSE_GAMMA] = { .text = { "gamma", "gamma encoding applied",
+		"write round(255 c) with no gamma encoding: the assignment's colours are linear" } },
+	[RT_CAUSE_WHITE_SPECULAR] = { .text = { "white-highlight", "the highlight left white",
 		"multiply the specular term by the object colour: Lc ks (R.L)^n C" },
-	[RT_CAUSE_NO_SHADOWS] = { "no-shadows", "no shadows",
+		.rule = RT_RULE_WHITE_SPECULAR },
+	[RT_CAUSE_NO_SHADOWS] = { .text = { "no-shadows", "no shadows",
 		"cast a shadow ray from the hit point to each light and skip the light when an "
 		"object is nearer than the light" },
-	[RT_CAUSE_LIGHT_BEHIND] = { "light-behind", "lights behind the surface still lighting it",
+		.rule = RT_RULE_NO_SHADOWS },
+	[RT_CAUSE_LIGHT_BEHIND] = { .text = { "light-behind", "lights behind the surface still lighting it",
 		"skip a light when N.L <= 0, its specular highlight included" },
-	[RT_CAUSE_RECURSION_FEWER] = { "recursion-fewer", "one reflection level too few",
+		.rule = RT_RULE_LIGHT_BEHIND },
+	[RT_CAUSE_RECURSION_FEWER] = { .text = { "recursion-fewer", "one reflection level too few",
 		"trace the reflected ray while level < recursion level, with the primary ray at "
-		"level 1" },
-	[RT_CAUSE_RECURSION_MORE] = { "recursion-more", "one reflection level too many",
+		"level 1" } },
+	[RT_CAUSE_RECURSION_MORE] = { .text = { "recursion-more", "one reflection level too many",
 		"stop reflecting at the recursion level: a primary ray is level 1, and recursion "
-		"level 1 means no reflection" },
-	[RT_CAUSE_CLAMP_OTHER] = { "clamp-final", "colours clamped only at the end",
-		"clamp each channel to [0, 1] at every recursion level, before it is scaled by kr" },
-	[RT_CAUSE_NEVER_CLAMP] = { "no-clamp", "colours never clamped (bytes wrapping round)",
-		"clamp each channel to [0, 1] at every level and before the conversion to 0..255" },
-	[RT_CAUSE_PIXEL_CORNERS] = { "pixel-corners", "rays through the pixels' corners",
-		"aim each primary ray at the centre of its pixel: (i + 0.5, j + 0.5)" },
-	[RT_CAUSE_UNIT_STARTS] = { "unit-offset", "shadow and reflected rays started 1 unit out",
+		"level 1 means no reflection" } },
+	[RT_CAUSE_CLAMP_OTHER] = { .text = { "clamp-final", "colours clamped only at the end",
+		"clamp each channel to [0, 1] at every recursion level, before it is scaled by kr" } },
+	[RT_CAUSE_NEVER_CLAMP] = { .text = { "no-clamp", "colours never clamped (bytes wrapping round)",
+		"clamp each channel to [0, 1] at every level and before the conversion to 0..255" } },
+	[RT_CAUSE_PIXEL_CORNERS] = { .text = { "pixel-corners", "rays through the pixels' corners",
+		"aim each primary ray at the centre of its pixel: (i + 0.5, j + 0.5)" } },
+	[RT_CAUSE_UNIT_STARTS] = { .text = { "unit-offset", "shadow and reflected rays started 1 unit out",
 		"start shadow and reflected rays at intersection + direction * epsilon with a tiny "
 		"epsilon (1e-6), not the handout's * 1" },
-	[RT_CAUSE_FLOOR_SWAPPED] = { "floor-swapped", "the floor's tiles swapped",
+		.rule = RT_RULE_UNIT_STARTS },
+	[RT_CAUSE_FLOOR_SWAPPED] = { .text = { "floor-swapped", "the floor's tiles swapped",
 		"tile (i, j) is white when i + j is even: i = floor((x + 500) / tile width)" },
-	[RT_CAUSE_NO_REFLECTIONS] = { "no-reflections", "no reflections (recursion level 1)",
+		.rule = RT_RULE_FLOOR_SWAPPED },
+	[RT_CAUSE_NO_REFLECTIONS] = { .text = { "no-reflections", "no reflections (recursion level 1)",
 		"add kr I(P + eps R, R) for each hit while level < the file's recursion level (its "
-		"first number; a primary ray is level 1)" },
-	[RT_CAUSE_RECURSION_LEVEL] = { "recursion-level", "another recursion level",
+		"first number; a primary ray is level 1)" } },
+	[RT_CAUSE_RECURSION_LEVEL] = { .text = { "recursion-level", "another recursion level",
 		"read the recursion level from the file (its first number) and trace reflections "
-		"while level < it, the primary ray at level 1" },
-	[RT_CAUSE_FLOOR_HORIZON] = { "floor-horizon", "the floor reaching the horizon",
+		"while level < it, the primary ray at level 1" } },
+	[RT_CAUSE_FLOOR_HORIZON] = { .text = { "floor-horizon", "the floor reaching the horizon",
 		"the floor is a square of the file's width centred on the origin (|x|, |y| < "
-		"width / 2): a ray that meets z = 0 outside it hits no floor" },
-	[RT_CAUSE_FLOOR_SIZE] = { "floor-size", "the floor of another width",
+		"width / 2): a ray that meets z = 0 outside it hits no floor" } },
+	[RT_CAUSE_FLOOR_SIZE] = { .text = { "floor-size", "the floor of another width",
 		"make the floor the dialect's width (1000; --floor WIDTH,TILE when the assignment "
-		"says otherwise)" },
-	[RT_CAUSE_FLOOR_CELL] = { "floor-cell", "the checker's cells of another size",
+		"says otherwise)" } },
+	[RT_CAUSE_FLOOR_CELL] = { .text = { "floor-cell", "the checker's cells of another size",
 		"make the cells the dialect's width (20 classic and spot, 30 pyramid, the header's "
-		"CELL in nearfar)" },
-	[RT_CAUSE_FLOOR_PLACE] = { "floor-place", "the floor with a corner at the origin",
-		"centre the floor on the origin: it covers -width / 2 <= x, y < width / 2" },
-	[RT_CAUSE_CHECKER_PHASE] = { "checker-phase", "the checker's cells counted from another origin",
+		"CELL in nearfar)" } },
+	[RT_CAUSE_FLOOR_PLACE] = { .text = { "floor-place", "the floor with a corner at the origin",
+		"centre the floor on the origin: it covers -width / 2 <= x, y < width / 2" } },
+	[RT_CAUSE_CHECKER_PHASE] = { .text = { "checker-phase", "the checker's cells counted from another origin",
 		"count the cells from the floor's corner: i = floor((x + width / 2) / cell), j "
-		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" },
+		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" } },
 };
 
 static const struct grade_cause_text grade_clamp_level_text = {
@@ -77,19 +94,23 @@ const struct grade_cause_text *grade_cause_text(enum grade_cause c, enum clamp_m
 {
 	if (c == RT_CAUSE_CLAMP_OTHER && clamp == RT_CLAMP_FINAL)
 		return &grade_clamp_level_text;
-	return &grade_texts[c];
+	return &grade_causes[c].text;
 }
 
 bool grade_cause_is_transform(enum grade_cause c)
 {
-	return c <= RT_CAUSE_RED_BLUE;
+	return (unsigned)c < RT_CAUSE_COUNT && grade_causes[c].map != 0;
+}
+
+bool grade_cause_moves_pixels(enum grade_cause c)
+{
+	return (unsigned)c < RT_CAUSE_COUNT &&
+	       (grade_causes[c].map & (GRADE_MAP_MIRROR | GRADE_MAP_FLIP | GRADE_MAP_TRANSPOSE)) != 0;
 }
 
 unsigned grade_cause_map(enum grade_cause c)
 {
-	return c == RT_CAUSE_MIRRORED ? GRADE_MAP_MIRROR : c == RT_CAUSE_UPSIDE_DOWN ? GRADE_MAP_FLIP
-		: c == RT_CAUSE_TRANSPOSED ? GRADE_MAP_TRANSPOSE : c == RT_CAUSE_RED_BLUE
-		? GRADE_MAP_RED_BLUE : 0u;
+	return (unsigned)c < RT_CAUSE_COUNT ? grade_causes[c].map : 0u;
 }
 
 /* The other recursion levels tried (RT_CAUSE_RECURSION_LEVEL's forms):
@@ -190,19 +211,12 @@ void grade_variant_plain(const struct grade_job *job, struct grade_variant *v)
 bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 		      struct grade_variant *v)
 {
-	static const unsigned rule_of[RT_CAUSE_COUNT] = {
-		[RT_CAUSE_WHITE_SPECULAR] = RT_RULE_WHITE_SPECULAR,
-		[RT_CAUSE_NO_SHADOWS] = RT_RULE_NO_SHADOWS,
-		[RT_CAUSE_LIGHT_BEHIND] = RT_RULE_LIGHT_BEHIND,
-		[RT_CAUSE_UNIT_STARTS] = RT_RULE_UNIT_STARTS,
-		[RT_CAUSE_FLOOR_SWAPPED] = RT_RULE_FLOOR_SWAPPED,
-	};
 	const int recursion = job->settings.recursion;
 
 	grade_variant_plain(job, v);
 	if (form < 0 || form >= GRADE_VARIANTS)
 		return false;
-	v->rules = rule_of[c];
+	v->rules = grade_causes[c].rule;
 	v->use_rules = v->rules != 0;
 	switch (c) {
 	case RT_CAUSE_MIRRORED:

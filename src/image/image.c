@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -34,14 +35,60 @@ void image_free(struct image *img)
 	img->pixels = NULL;
 }
 
+/* The formats, one row each: everything else (the options' words and
+ * messages, the extensions, the writers, the reader's detection, the
+ * POV-Ray export of textures) reads them from here. */
+static const struct image_format_row {
+	const char *name;
+	const char *magic;	/* the file's first bytes */
+	size_t magic_len;
+	int (*write)(const struct image *img, FILE *f, struct diag *d);
+} image_formats[] = {
+	[RT_FORMAT_PNG] = { "png", "\x89PNG\r\n\x1a\n", 8, image_write_png },
+	[RT_FORMAT_BMP] = { "bmp", "BM", 2, image_write_bmp },
+	[RT_FORMAT_PPM] = { "ppm", "P", 1, image_write_ppm },
+};
+#define IMAGE_FORMATS ((int)(sizeof(image_formats) / sizeof(image_formats[0])))
+
 enum image_format image_format_from_name(const char *name)
 {
-	if (strcasecmp(name, "png") == 0)
-		return RT_FORMAT_PNG;
-	if (strcasecmp(name, "bmp") == 0)
-		return RT_FORMAT_BMP;
-	if (strcasecmp(name, "ppm") == 0)
-		return RT_FORMAT_PPM;
+	int f;
+
+	for (f = RT_FORMAT_UNKNOWN + 1; f < IMAGE_FORMATS; f++)
+		if (strcasecmp(name, image_formats[f].name) == 0)
+			return (enum image_format)f;
+	return RT_FORMAT_UNKNOWN;
+}
+
+const char *image_format_name(enum image_format fmt)
+{
+	return fmt > RT_FORMAT_UNKNOWN && (int)fmt < IMAGE_FORMATS ? image_formats[fmt].name : "?";
+}
+
+const char *image_format_names(char *buf, size_t size, const char *prefix)
+{
+	size_t used = 0;
+	int f;
+
+	if (size > 0)
+		buf[0] = '\0';
+	for (f = RT_FORMAT_UNKNOWN + 1; f < IMAGE_FORMATS && used < size; f++) {
+		int n = snprintf(buf + used, size - used, "%s%s%s",
+				 f == RT_FORMAT_UNKNOWN + 1 ? "" : f + 1 == IMAGE_FORMATS ? " or " : ", ",
+				 prefix, image_formats[f].name);
+		used += n > 0 ? (size_t)n : 0;
+	}
+	return buf;
+}
+
+enum image_format image_format_of_bytes(const unsigned char *data, size_t len)
+{
+	int f;
+
+	for (f = RT_FORMAT_UNKNOWN + 1; f < IMAGE_FORMATS; f++)
+		if (len >= image_formats[f].magic_len &&
+		    memcmp(data, image_formats[f].magic, image_formats[f].magic_len) == 0)
+			return (enum image_format)f;
 	return RT_FORMAT_UNKNOWN;
 }
 
@@ -56,16 +103,8 @@ enum image_format image_format_from_path(const char *path)
 static int image_write_stream(const struct image *img, FILE *f, enum image_format fmt,
 			      struct diag *d)
 {
-	switch (fmt) {
-	case RT_FORMAT_PNG:
-		return image_write_png(img, f, d);
-	case RT_FORMAT_BMP:
-		return image_write_bmp(img, f, d);
-	case RT_FORMAT_PPM:
-		return image_write_ppm(img, f, d);
-	case RT_FORMAT_UNKNOWN:
-		break;
-	}
+	if (fmt > RT_FORMAT_UNKNOWN && (int)fmt < IMAGE_FORMATS)
+		return image_formats[fmt].write(img, f, d);
 	return diag_fail(d, RT_E_INVALID, "unknown image format");
 }
 

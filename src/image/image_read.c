@@ -281,10 +281,7 @@ int image_read_memory(const unsigned char *data, size_t len, const char *name, s
 	img->width = img->height = 0;
 	img->pixels = NULL;
 	if (format)
-		*format = len >= 2 && data[0] == 'B' && data[1] == 'M' ? RT_FORMAT_BMP
-			: len >= 2 && data[0] == 'P' ? RT_FORMAT_PPM
-			: len >= 8 && memcmp(data, "\x89PNG\r\n\x1a\n", 8) == 0 ? RT_FORMAT_PNG
-			: RT_FORMAT_UNKNOWN;
+		*format = image_format_of_bytes(data, len);
 	if (len == 0)
 		return diag_set(d, RT_E_SYNTAX, name, 0, 0, "an empty file, not an image");
 	if (len >= 2 && data[0] == 'B' && data[1] == 'M') {

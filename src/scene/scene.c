@@ -249,21 +249,44 @@ int scene_add_view_floor(struct scene *s, struct diag *d)
 	return 0;
 }
 
+/* The dialects' names, one table (--dialect, the notes, the settings'
+ * text, the messages). */
+static const char *const scene_dialects[RT_DIALECT_COUNT] = {
+	[RT_DIALECT_AUTO] = "auto",
+	[RT_DIALECT_CLASSIC] = "classic",
+	[RT_DIALECT_SPOT] = "spot",
+	[RT_DIALECT_PYRAMID] = "pyramid",
+	[RT_DIALECT_NEARFAR] = "nearfar",
+};
+
 const char *scene_dialect_name(enum scene_dialect d)
 {
-	switch (d) {
-	case RT_DIALECT_AUTO:
-		return "auto";
-	case RT_DIALECT_CLASSIC:
-		return "classic";
-	case RT_DIALECT_SPOT:
-		return "spot";
-	case RT_DIALECT_PYRAMID:
-		return "pyramid";
-	case RT_DIALECT_NEARFAR:
-		return "nearfar";
+	return (unsigned)d < RT_DIALECT_COUNT ? scene_dialects[d] : NULL;
+}
+
+int scene_dialect_from_name(const char *name)
+{
+	int d;
+
+	for (d = 0; d < RT_DIALECT_COUNT; d++)
+		if (strcmp(name, scene_dialects[d]) == 0)
+			return d;
+	return -1;
+}
+
+const char *scene_dialect_names(char *buf, size_t size)
+{
+	size_t used = 0;
+	int d;
+
+	if (size > 0)
+		buf[0] = '\0';
+	for (d = 0; d < RT_DIALECT_COUNT && used < size; d++) {
+		int n = snprintf(buf + used, size - used, "%s%s",
+				 d == 0 ? "" : d + 1 == RT_DIALECT_COUNT ? " or " : ", ", scene_dialects[d]);
+		used += n > 0 ? (size_t)n : 0;
 	}
-	return NULL;
+	return buf;
 }
 
 /* The figures of the ray tree's bound (scene_impl.h). */

@@ -11,10 +11,6 @@
 #include "scenefile/parse_private.h"
 #include "whitted/scenefile.h"
 
-#define CLASSIC_FAMILY \
-	(RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) | \
-	 RT_DIALECT_BIT(RT_DIALECT_PYRAMID))
-
 /* A light's colour: three numbers >= 0 (lights may be brighter than 1). */
 int parse_light_colour(struct parser *p, struct color *out)
 {
@@ -152,7 +148,7 @@ int parse_classic(struct parser *p, struct scene *s, int threads, enum scene_dia
 	bool coloured;
 	int rc;
 
-	p->dialects = forced == RT_DIALECT_AUTO ? CLASSIC_FAMILY : RT_DIALECT_BIT(forced);
+	p->dialects = forced == RT_DIALECT_AUTO ? RT_DIALECT_CLASSIC_FAMILY : RT_DIALECT_BIT(forced);
 	p->dialect_name = scene_dialect_name(forced == RT_DIALECT_AUTO ? RT_DIALECT_CLASSIC : forced);
 	if ((rc = parse_recursion(p, s)) < 0 || (rc = parse_image_size(p, s)) < 0 ||
 	    (rc = parse_objects(p, s, threads, &objects)) < 0)

@@ -25,9 +25,7 @@ static void floor_write_cell(const struct shape *s, int k, const struct material
 	if (name)
 		fputs("texture { pigment { image_map { png \"", out);
 	else
-		fprintf(out, "texture { pigment { image_map { %s \"",
-			fl->tex_format[k] == RT_FORMAT_BMP ? "bmp" :
-			fl->tex_format[k] == RT_FORMAT_PPM ? "ppm" : "png");
+		fprintf(out, "texture { pigment { image_map { %s \"", image_format_name(fl->tex_format[k]));
 	for (p = name ? name : fl->tex_path[k]; *p; p++) {
 		if (*p == '"' || *p == '\\')
 			fputc('\\', out);

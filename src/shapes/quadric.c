@@ -233,8 +233,7 @@ static int quadric_parse(struct parser *p, struct shape **out);
 
 const struct shape_ops quadric_ops = {
 	.keyword = "general",
-	.dialects = RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) |
-		     RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
+	.dialects = RT_DIALECT_CLASSIC_FAMILY,
 	.parse = quadric_parse,
 	.intersect = quadric_intersect,
 	.normal = quadric_normal,

@@ -38,7 +38,7 @@ static const struct shape_ops *const builtin[] = {
 
 /* Every mask of the dialects' bits, RT_DIALECT_BIT(0) to that of the last
  * dialect: the masks the keyword lists are built for. */
-#define RT_DIALECT_MASKS (RT_DIALECT_BIT(RT_DIALECT_NEARFAR) << 1)
+#define RT_DIALECT_MASKS (1u << RT_DIALECT_COUNT)
 
 static pthread_rwlock_t lock = PTHREAD_RWLOCK_INITIALIZER;
 static pthread_once_t builtin_once = PTHREAD_ONCE_INIT;

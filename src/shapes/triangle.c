@@ -134,8 +134,7 @@ static int triangle_tessellate(const struct shape *s, const struct mesh_options 
 
 const struct shape_ops triangle_ops = {
 	.keyword = "triangle",
-	.dialects = RT_DIALECT_BIT(RT_DIALECT_CLASSIC) | RT_DIALECT_BIT(RT_DIALECT_SPOT) |
-		     RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
+	.dialects = RT_DIALECT_CLASSIC_FAMILY,
 	.parse = triangle_parse,
 	.intersect = triangle_intersect,
 	.intersect_packet = triangle_intersect_packet,

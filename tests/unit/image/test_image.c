@@ -239,6 +239,29 @@ static void test_image_format_from_path(void **state)
 	assert_int_equal(image_format_from_name("gif"), RT_FORMAT_UNKNOWN);
 }
 
+/* The formats' table read back: names, the message's list, and the
+ * signature bytes (a PPM's P of any kind; a BMP's BM; PNG's eight). */
+static void test_image_format_table(void **state)
+{
+	static const unsigned char png[] = { 0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0 };
+	char buf[64], small[6];
+
+	(void)state;
+	assert_string_equal(image_format_name(RT_FORMAT_PNG), "png");
+	assert_string_equal(image_format_name(RT_FORMAT_BMP), "bmp");
+	assert_string_equal(image_format_name(RT_FORMAT_PPM), "ppm");
+	assert_string_equal(image_format_name(RT_FORMAT_UNKNOWN), "?");
+	assert_string_equal(image_format_names(buf, sizeof(buf), ""), "png, bmp or ppm");
+	assert_string_equal(image_format_names(buf, sizeof(buf), "."), ".png, .bmp or .ppm");
+	assert_string_equal(image_format_names(small, sizeof(small), "."), ".png,");
+	assert_int_equal(image_format_of_bytes(png, sizeof(png)), RT_FORMAT_PNG);
+	assert_int_equal(image_format_of_bytes(png, 7), RT_FORMAT_UNKNOWN);
+	assert_int_equal(image_format_of_bytes((const unsigned char *)"BM\x36", 3), RT_FORMAT_BMP);
+	assert_int_equal(image_format_of_bytes((const unsigned char *)"P3\n", 3), RT_FORMAT_PPM);
+	assert_int_equal(image_format_of_bytes((const unsigned char *)"GIF89a", 6), RT_FORMAT_UNKNOWN);
+	assert_int_equal(image_format_of_bytes((const unsigned char *)"", 0), RT_FORMAT_UNKNOWN);
+}
+
 static void write_and_check(const char *dir, enum image_format fmt, const char *name,
 			    int w, int h)
 {
@@ -491,6 +514,7 @@ int main(int argc, char **argv)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_image_alloc),
 		cmocka_unit_test(test_image_format_from_path),
+		cmocka_unit_test(test_image_format_table),
 		cmocka_unit_test_setup_teardown(test_image_png_round_trip, setup_dir, teardown_dir),
 		cmocka_unit_test_setup_teardown(test_image_bmp_round_trip, setup_dir, teardown_dir),
 		cmocka_unit_test_setup_teardown(test_image_ppm_round_trip, setup_dir, teardown_dir),
