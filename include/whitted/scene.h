@@ -18,9 +18,10 @@
 #define RT_MAX_IMAGE_SIZE 32768
 #define RT_MAX_PIXELS (1L << 28)
 #define RT_MAX_RECURSION 256
-#define RT_MAX_OBJECTS 10000000L
+#define RT_MAX_OBJECTS 500000000L	/* within the hierarchy's 2^29 */
 #define RT_MAX_LIGHTS 100000L
-#define RT_MAX_SCENE_BYTES (1L << 28)	/* 256 MiB: about 2 million objects */
+/* A scene file's size is limited at run time (scenefile.h:
+ * scene_read_options' max_bytes, --max-scene-size). */
 
 /* The implicit floor of every scene (the assignment's Floor(1000, 20)). */
 #define RT_FLOOR_WIDTH 1000.0

@@ -24,7 +24,17 @@ struct scene_read_options {
 	 * naming its line, where the strict reading refuses numbers that no
 	 * count describes.  For `compare --lenient` and `grade --lenient`. */
 	bool lenient;
+	/* The largest file scene_load reads, in bytes; 0: the default,
+	 * scene_default_max_bytes(). */
+	size_t max_bytes;
 };
+
+/* The default limit on a scene file's size: an eighth of the memory this
+ * process may use (the machine's, or its address-space limit where lower:
+ * reading, the scene and the hierarchy's build take about six times the
+ * file's size at their peak), at least 256 MiB; 256 MiB where the memory
+ * is unknown. */
+size_t scene_default_max_bytes(void);
 
 /* Parses scene text; name is used in diagnostics.  Adds no floor (the
  * scene's view says which floor the file's dialect has: scene_view_of and

@@ -55,6 +55,10 @@ void rt_on_stop_signals(void (*fn)(int));
 
 /* The process's peak resident memory in bytes (0 when unknown). */
 double rt_peak_resident_bytes(void);
+/* The memory this process may use, in bytes: the machine's physical
+ * memory, or the process's address-space limit where that is lower (0
+ * when neither is known). */
+unsigned long long rt_memory_bytes(void);
 
 /* Gives the open file fd the permission bits mode (0 or -1 with errno);
  * nothing where files have none. */

@@ -102,6 +102,22 @@ void rt_on_stop_signals(void (*fn)(int))
 	signal(SIGXFSZ, SIG_IGN);
 }
 
+unsigned long long rt_memory_bytes(void)
+{
+	unsigned long long mem = 0;
+	struct rlimit rl;
+#ifdef _SC_PHYS_PAGES
+	long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+
+	if (pages > 0 && size > 0)
+		mem = (unsigned long long)pages * (unsigned long long)size;
+#endif
+	if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+	    (mem == 0 || (unsigned long long)rl.rlim_cur < mem))
+		mem = (unsigned long long)rl.rlim_cur;
+	return mem;
+}
+
 double rt_peak_resident_bytes(void)
 {
 	struct rusage ru;

@@ -81,6 +81,16 @@ void rt_on_stop_signals(void (*fn)(int))
 	signal(SIGTERM, fn);
 }
 
+unsigned long long rt_memory_bytes(void)
+{
+	MEMORYSTATUSEX ms;
+
+	ms.dwLength = sizeof(ms);
+	if (!GlobalMemoryStatusEx(&ms))
+		return 0;
+	return (unsigned long long)ms.ullTotalPhys;
+}
+
 double rt_peak_resident_bytes(void)
 {
 	PROCESS_MEMORY_COUNTERS pmc;

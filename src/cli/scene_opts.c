@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,6 +44,9 @@ const char cli_scene_help[] =
 	"      --glass INDEX[:IOR[:KT]][,...]  make object INDEX (1-based, in the file's\n"
 	"                         order) glass: index of refraction IOR (default 1.5),\n"
 	"                         transmission KT in (0, 1) (default 0.8); repeatable\n"
+	"      --max-scene-size SIZE  the largest scene file read, in bytes or with K,\n"
+	"                         M, G (default an eighth of the memory the process\n"
+	"                         may use, at least 256M)\n"
 	"      --test-scene       the assignment's built-in test scene instead of a file\n"
 	"      --plugin FILE.so   load a primitive plugin (repeatable); every .so in the\n"
 	"                         directories of $WHITTED_PLUGIN_PATH (colon-separated)\n"
@@ -86,6 +90,27 @@ static int cli_parse_dialect(const char *arg, enum scene_dialect *out, struct di
 	}
 	return diag_fail(d, RT_E_INVALID, "--dialect: expected %s, found '%s'",
 			 scene_dialect_names(names, sizeof(names)), arg);
+}
+
+/* A size in bytes: digits and an optional K, M, G or T (powers of 1024),
+ * at least 1. */
+static int cli_parse_bytes(const char *opt, const char *arg, size_t *out, struct diag *d)
+{
+	static const char units[] = "KMGT";
+	unsigned long long n = 0, scale = 1;
+	const char *p = arg, *u;
+
+	while (*p >= '0' && *p <= '9' && n <= ULLONG_MAX / 10 - 1)
+		n = n * 10 + (unsigned long long)(*p++ - '0');
+	if (*p && (u = strchr(units, *p)) != NULL && p[1] == '\0') {
+		scale = 1ULL << (10 * (u - units + 1));
+		p++;
+	}
+	if (p == arg || *p || n == 0 || n > (unsigned long long)SIZE_MAX / scale)
+		return diag_fail(d, RT_E_INVALID, "%s: expected a size in bytes, or with K, M or G "
+				 "(512M, 2G), found '%s'", opt, arg);
+	*out = (size_t)(n * scale);
+	return 0;
 }
 
 /* "WHITE[,BLACK]": either may be empty, not both; at most one comma. */
@@ -274,6 +299,9 @@ int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag 
 		break;
 	case CLI_OPT_LENIENT:
 		o->read.lenient = true;
+		break;
+	case CLI_OPT_MAX_SCENE_SIZE:
+		rc = cli_parse_bytes("--max-scene-size", arg, &o->read.max_bytes, d);
 		break;
 	case CLI_OPT_PLUGIN:
 		if (arg[0] == '\0')

@@ -31,6 +31,7 @@ enum cli_option {
 	CLI_OPT_GLASS,
 	CLI_OPT_PLUGIN,
 	CLI_OPT_LENIENT,
+	CLI_OPT_MAX_SCENE_SIZE,
 	CLI_OPT_FIRST_PRIVATE,	/* each tool numbers its own options from here */
 };
 
@@ -52,7 +53,8 @@ enum cli_option {
 	{ "floor-texture", required_argument, NULL, CLI_OPT_FLOOR_TEXTURE }, \
 	{ "glass", required_argument, NULL, CLI_OPT_GLASS }, \
 	{ "plugin", required_argument, NULL, CLI_OPT_PLUGIN }, \
-	{ "lenient", no_argument, NULL, CLI_OPT_LENIENT }
+	{ "lenient", no_argument, NULL, CLI_OPT_LENIENT }, \
+	{ "max-scene-size", required_argument, NULL, CLI_OPT_MAX_SCENE_SIZE }
 
 #define CLI_MAX_GLASS 64
 #define CLI_GLASS_IOR 1.5	/* --glass's default index of refraction (crown glass) */

@@ -25,7 +25,7 @@ static void print_note(void *ctx, const struct diag *note)
 
 int main(int argc, char **argv)
 {
-	struct scene_read_options read = { 2, false, RT_DIALECT_AUTO, false };
+	struct scene_read_options read = { 2, false, RT_DIALECT_AUTO, false, 0 };
 	struct camera_params params;
 	struct camera cam;
 	struct render_job job;

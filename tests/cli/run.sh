@@ -70,6 +70,25 @@ bad_values --progress --progress sometimes ''
 bad_values --region --region abc 0,0,8 0,0,8,8x 0,0,769,8 4,0,2,8 -1,0,8,8 0,0,0,0 1e3,0,8,8 ''
 bad_values --frames --frames abc 0 2x 100000000 ''
 bad_values --grid --grid 2x 0x2 2x2x2 x2 ''
+bad_values --max-scene-size --max-scene-size abc 0 1X 12.5 -1 1MB '' 99999999999999999999G
+# The scene file's size limit: a file over it refused (exit 1, naming the
+# limit, the option and the default, no output), also from a pipe; one
+# within it read; the units are powers of 1024.
+expect_error max-scene-size-over 1 'the scene file is larger than the limit of 64 bytes (--max-scene-size SIZE changes it; the default here is' \
+	-o x.png --max-scene-size 64 "$SCENE"
+clean_wd
+(cd "$T/wd" && "$W" -q -o x.png --max-scene-size 100 - <"$SCENE") >"$T/out" 2>"$T/err"
+rc=$?
+check max-scene-size-pipe-exit [ "$rc" -eq 1 ]
+check max-scene-size-pipe-message grep -qF '<stdin>: the scene file is larger than the limit of 100 bytes' "$T/err"
+check max-scene-size-pipe-no-file wd_empty
+scene_bytes=$(wc -c <"$SCENE")
+run -q -s 8 -o x.png --max-scene-size "$scene_bytes" "$SCENE"
+check max-scene-size-exact [ "$rc" -eq 0 -a -s "$T/wd/x.png" ]
+clean_wd
+run -q -s 8 -o x.png --max-scene-size "$((scene_bytes - 1))" "$SCENE"
+check max-scene-size-one-short [ "$rc" -eq 1 ]
+clean_wd
 expect_error "option --tile 'x'" 2 --tile -s 8 -o x.png --grid 2x2 --tile x "$SCENE"
 expect_error "option --tile past the grid" 2 --tile -s 8 -o x.png --grid 2x2 --tile 5 "$SCENE"
 expect_error "option --grid finer than the image" 2 --grid -s 8 -o x.png --grid 9x9 --tile 1 "$SCENE"
@@ -235,7 +254,7 @@ hostile "10 MB single token" 'token\.txt:1:1: error: token too long' "$T/token.t
 # moves with the program's code: a short token or one over 256 bytes.
 hostile "binary file" '^.*/whitted:1:1: error: (expected an integer \(recursion level\)|token too long \(over 256 bytes\) where an integer \(recursion level\) was expected)' "$W"
 truncate -s 300M "$T/sparse.txt"
-hostile "300 MiB file (sparse) refused by size" 'whitted: error: [^ ]*sparse\.txt: the file is larger than the limit of 268435456 bytes' "$T/sparse.txt"
+hostile "300 MiB file (sparse) refused by size" 'whitted: error: [^ ]*sparse\.txt: the scene file is larger than the limit of 256 MiB \(--max-scene-size' "$T/sparse.txt"
 rm -f "$T/sparse.txt"
 yes '# a comment' | head -n 1000000 >"$T/comments.txt"
 hostile "a million comment lines" 'comments\.txt:1000001:1: error: .*the file has no data' "$T/comments.txt"
@@ -243,7 +262,7 @@ printf '4\n16\n10000000\nsphere 0 0 10 1 1 1 1 0 0 0 0 0\n' >"$T/count.txt"
 hostile "object count of ten million, one object" 'count\.txt:5:1: error: expected an object keyword .* for object 2 of 10000000, found end of file' "$T/count.txt"
 printf '4\n16\n0\n100000\n0 0 100\n' >"$T/lights.txt"
 hostile "light count of 100000, one light" 'lights\.txt:6:1: error: .*found end of file \(100000 lights need 600000 numbers' "$T/lights.txt"
-hostile "scene from /dev/zero" '^whitted: error: /dev/zero: the file is larger than the limit' /dev/zero
+hostile "scene from /dev/zero" '^whitted: error: /dev/zero: the scene file is larger than the limit of 256 MiB' /dev/zero
 hostile "scene is /dev/null" '^/dev/null:1:1: error: .*\(the file is empty\)' /dev/null
 rm -f "$T/token.txt" "$T/comments.txt"
 

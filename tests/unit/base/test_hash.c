@@ -54,7 +54,7 @@ static void test_hash_threaded_equals_plain(void **state)
 static void test_hash_of_scenes(void **state)
 {
 	const char text[] = "4 8\n0\n0\n";
-	struct scene_read_options opt = { 1, true, RT_DIALECT_AUTO, false };
+	struct scene_read_options opt = { 1, true, RT_DIALECT_AUTO, false, 0 };
 	struct scene *s;
 	struct diag d;
 

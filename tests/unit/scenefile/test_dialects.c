@@ -33,7 +33,7 @@ static void on_note(void *ctx, const struct diag *note)
 
 static void read_as(const char *text, enum scene_dialect forced, struct read *r)
 {
-	struct scene_read_options opt = { 1, false, forced, false };
+	struct scene_read_options opt = { 1, false, forced, false, 0 };
 
 	memset(r, 0, sizeof(*r));
 	diag_clear(&r->d);

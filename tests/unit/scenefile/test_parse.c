@@ -409,9 +409,9 @@ static void test_parse_error_settings(void **state)
 	assert_parse_error("1 32769 0 0", RT_E_RANGE, 1, 3, "image size must be between 1 and 32768");
 	/* 16385^2 is over the 2^28-pixel limit. */
 	assert_parse_error("1 16385 0 0", RT_E_RANGE, 1, 3, "16385", "268435456 pixels");
-	assert_parse_error("1 1 -1 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 10000000, found -1");
+	assert_parse_error("1 1 -1 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 500000000, found -1");
 	assert_parse_error("1 1 1.5 0", RT_E_SYNTAX, 1, 5, "expected an integer (object count), found '1.5'");
-	assert_parse_error("1 1 10000001 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 10000000");
+	assert_parse_error("1 1 500000001 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 500000000");
 	assert_parse_error("1 1 0 100001", RT_E_RANGE, 1, 7, "light count must be between 0 and 100000");
 	assert_parse_error("1 1 0 2.5", RT_E_SYNTAX, 1, 7, "expected an integer (light count), found '2.5'");
 	assert_parse_error("1 1 0 x", RT_E_SYNTAX, 1, 7, "expected an integer (light count), found 'x'");
@@ -424,7 +424,7 @@ static void test_parse_error_huge_integers(void **state)
 	 * error, not "not an integer". */
 	assert_parse_error("1e300 1 0 0", RT_E_RANGE, 1, 1, "recursion level must be between 0 and 256");
 	assert_parse_error("1 1e19 0 0", RT_E_RANGE, 1, 3, "image size must be between 1 and 32768");
-	assert_parse_error("1 1 -1e300 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 10000000");
+	assert_parse_error("1 1 -1e300 0", RT_E_RANGE, 1, 5, "object count must be between 0 and 500000000");
 	assert_parse_error("1 1 0 9223372036854775808", RT_E_RANGE, 1, 7, "light count");
 }
 

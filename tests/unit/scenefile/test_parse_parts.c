@@ -114,7 +114,7 @@ static void count_note(void *ctx, const struct diag *note)
 
 static void parse_with(const struct text *t, int threads, struct outcome *o)
 {
-	struct scene_read_options opt = { threads, false, RT_DIALECT_AUTO, false };
+	struct scene_read_options opt = { threads, false, RT_DIALECT_AUTO, false, 0 };
 
 	memset(o, 0, sizeof(*o));
 	diag_clear(&o->d);
