@@ -19,7 +19,9 @@
 # a host that takes a processor away for a moment, or hands back memory
 # it had reclaimed, costs 5 to 20 ms in one run of three or four, so its
 # median wants more runs than the long ones'), THREADS (2),
-# CASES (default "example gen-1k gen-100k gen-1M cloud-1k cloud-100k compare"),
+# CASES (default "example gen-1k gen-100k gen-1M gen-10M cloud-1k cloud-100k
+# compare"; gen-10M is 10 million triangles, a 1 GB file generated once into
+# BENCH_DIR, timed RUNS_10M times, default 1, the whole process the figure),
 # BENCH_DIR (build/bench-out), POV_1M=1 to time POV-Ray on 1M primitives too,
 # POV_EXPORT (default build/scene2pov): the exporter, called as
 # "$POV_EXPORT --finish plain -q -s SIZE -o OUT.pov SCENE"; it writes OUT.ini
@@ -68,6 +70,9 @@ gen() {
 for n in 1 1000 100000 1000000; do
 	gen surface $n
 done
+case " ${CASES:-gen-10M} " in
+*" gen-10M "*) gen surface 10000000 ;;
+esac
 gen cloud 1000
 gen cloud 100000
 
@@ -191,13 +196,14 @@ bench_compare() {
 	echo "$(median <"$DIR/compare-$1.times")" >"$DIR/compare-$1.median"
 }
 compare_cases=no
-for c in ${CASES:-example gen-1k gen-100k gen-1M cloud-1k cloud-100k compare}; do
+for c in ${CASES:-example gen-1k gen-100k gen-1M gen-10M cloud-1k cloud-100k compare}; do
 	[ "$c" = compare ] && { compare_cases=yes; continue; }
 	case $c in
 	example) bench example scenes/scene.txt 1536 1 "$RUNS_EXAMPLE" "$have_pov" ;;
 	gen-1k) bench gen-1k "$DIR/surface-1000.txt" 512 1000 "$RUNS" "$have_pov" ;;
 	gen-100k) bench gen-100k "$DIR/surface-100000.txt" 512 100000 "$RUNS" "$have_pov" ;;
 	gen-1M) bench gen-1M "$DIR/surface-1000000.txt" 512 1000000 "$runs1m" "$pov1m" ;;
+	gen-10M) bench gen-10M "$DIR/surface-10000000.txt" 512 10000000 "${RUNS_10M:-1}" no ;;
 	cloud-1k) bench cloud-1k "$DIR/cloud-1000.txt" 512 1000 "$RUNS" "$have_pov" ;;
 	cloud-100k) bench cloud-100k "$DIR/cloud-100000.txt" 512 100000 "$RUNS" "$have_pov" ;;
 	*) echo "bench: unknown case '$c'" >&2; exit 2 ;;

@@ -351,12 +351,6 @@ const char *accel_walk_name(const struct accel *a)
 	return "embree";
 }
 
-/* WHITTED_ISA caps nothing here: Embree chooses its own instructions. */
-const char *accel_walk_cap_unknown(void)
-{
-	return NULL;
-}
-
 size_t accel_bytes(const struct accel *a)
 {
 	(void)a;
