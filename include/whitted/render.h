@@ -76,7 +76,10 @@ struct render_job {
 	 * is cancelled first), calls for different bands may come at the
 	 * same time, a thread's own calls one after the other.  No calls
 	 * when band_done is NULL or band_rows < 1 (image_png_writer_band_done
-	 * compresses a PNG's rows this way). */
+	 * compresses a PNG's rows this way).  A promise of the installed API,
+	 * not the PNG writer's detail: any program may write or send rows
+	 * beside the render with it (a PNG's strips, a socket's stream, a
+	 * window), which the image alone at the end cannot give. */
 	int band_rows;
 	void (*band_done)(void *ctx, int band, int thread);
 	void *band_ctx;
