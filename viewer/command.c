@@ -25,27 +25,6 @@ int command_quote(char *buf, size_t size, const char *s)
 	return o.full ? -RT_E_RANGE : 0;
 }
 
-void command_settings(struct settings *out, const struct cli_scene *given,
-		      const struct scene *s, const struct camera_params *cam)
-{
-	settings_init(out);
-	out->size = scene_image_size(s);
-	out->recursion = scene_recursion(s);
-	out->camera = *cam;
-	out->floor = !given->no_floor;
-	out->floor_width = given->floor_width;
-	out->floor_tile = given->floor_tile;
-	out->floor_mat = given->floor_mat;
-	out->floor_from_view = !given->floor_given;
-	out->dialect = given->read.dialect;
-	out->clamp = given->clamp;
-	out->samples = given->samples;
-	out->floor_texture[0] = given->floor_texture[0];
-	out->floor_texture[1] = given->floor_texture[1];
-	out->glass = given->glass_text;
-	out->floor_texture_hash = scene_floor_texture_hash(s);
-}
-
 int command_format(char *buf, size_t size, const char *scene_path, enum scene_dialect dialect,
 		   const struct settings *s)
 {

@@ -9,11 +9,6 @@
 #include "whitted/settings.h"
 #include "cli/scene_opts.h"
 
-/* The settings of a capture of s (loaded with `given`) through cam: the
- * viewer's twin of whitted's settings_of (src/cli/render_cmd.c). */
-void command_settings(struct settings *out, const struct cli_scene *given,
-		      const struct scene *s, const struct camera_params *cam);
-
 /* Writes "whitted SCENE", " --dialect NAME" when dialect is not
  * RT_DIALECT_AUTO (the file was read as one asked for), and the options
  * that reproduce the settings (settings_format_options: "--eye X,Y,Z

@@ -210,7 +210,7 @@ static void start_capture(void)
 	}
 	diag_clear(&d);
 	fly_camera_params(&v.cam, &p);
-	command_settings(&set, &v.opts, v.scene, &p);
+	cli_settings(&set, &v.opts, v.scene, &p);
 	/* The camera whitted builds from the printed numbers (and the near
 	 * plane and aspect that it reads from the file again). */
 	if (camera_init(&cam, &p, scene_image_size(v.scene), &d) < 0) {

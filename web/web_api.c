@@ -138,10 +138,7 @@ int web_render_rows(int y0, int y1, uint8_t *out)
 
 	if (!web.open)
 		return TOOL_EXIT_USAGE;
-	render_job_init(&job, web.scene, &web.cam, 1);
-	job.settings.clamp = web.o.scene.clamp;
-	job.samples = web.o.scene.samples;
-	job.max_rays = web.o.max_rays;
+	cli_render_job(&job, &web.o.scene, web.scene, &web.cam, 1, web.o.max_rays);
 	job.y0 = y0;
 	job.y1 = y1;
 	img.width = web.cam.width;

@@ -63,23 +63,8 @@ static int check_output_dir(const char *path, struct diag *d)
 static void settings_of(const struct options *o, const struct scene *s,
 			const struct camera_params *params, struct settings *out)
 {
-	settings_init(out);
-	out->size = scene_image_size(s);
-	out->recursion = scene_recursion(s);
-	out->camera = *params;
-	out->floor = !o->scene.no_floor;
-	out->floor_width = o->scene.floor_width;
-	out->floor_tile = o->scene.floor_tile;
-	out->floor_mat = o->scene.floor_mat;
-	out->floor_from_view = !o->scene.floor_given;
-	out->dialect = o->scene.read.dialect;
-	out->clamp = o->scene.clamp;
+	cli_settings(out, &o->scene, s, params);
 	out->plugins = cli_plugins_used(s);
-	out->samples = o->scene.samples;
-	out->floor_texture[0] = o->scene.floor_texture[0];
-	out->floor_texture[1] = o->scene.floor_texture[1];
-	out->glass = o->scene.glass_text;
-	out->floor_texture_hash = scene_floor_texture_hash(s);
 }
 
 struct run_times {
@@ -104,10 +89,7 @@ static int render_one(const struct options *o, const struct scene *s, const stru
 	double t0, t1, t2;
 	int rc;
 
-	render_job_init(&job, s, cam, o->threads);
-	job.settings.clamp = o->scene.clamp;
-	job.samples = o->scene.samples;
-	job.max_rays = o->max_rays;
+	cli_render_job(&job, &o->scene, s, cam, o->threads, o->max_rays);
 	if (o->region) {
 		job.x0 = o->x0;
 		job.y0 = o->y0;

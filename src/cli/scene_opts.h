@@ -14,6 +14,7 @@
 #include "whitted/render.h"
 #include "whitted/scene.h"
 #include "whitted/scenefile.h"
+#include "whitted/settings.h"
 #include "whitted/version.h"
 
 enum cli_option {
@@ -144,5 +145,14 @@ char *cli_default_output(const char *scene_path, const char *suffix);
 
 /* The online processor count, at least 1. */
 int cli_default_threads(void);
+
+/* The settings of an image of s seen by cam, from the scene options
+ * (plugins aside: the caller adds them where its text records them). */
+void cli_settings(struct settings *out, const struct cli_scene *o, const struct scene *s,
+		  const struct camera_params *cam);
+/* The render job for the whole image of s seen by cam, with the options
+ * that reach the render (clamp, samples) and max_rays (0: the default). */
+void cli_render_job(struct render_job *job, const struct cli_scene *o, const struct scene *s,
+		    const struct camera *cam, int threads, uint64_t max_rays);
 
 #endif

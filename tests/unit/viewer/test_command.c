@@ -111,7 +111,7 @@ static void test_command_carries_image_options(void **state)
 	given.floor_given = true;
 	given.clamp = RT_CLAMP_FINAL;
 	assert_int_equal(cli_scene_load(&given, NULL, NULL, NULL, &s, &cam, &d), 0);
-	command_settings(&set, &given, s, &p);
+	cli_settings(&set, &given, s, &p);
 	scene_destroy(s);
 	assert_int_equal(set.recursion, 3);
 	assert_int_equal(command_format(cmd, sizeof(cmd), NULL, RT_DIALECT_AUTO, &set), 0);
@@ -186,7 +186,7 @@ static void test_command_nearfar_round_trip(void **state)
 	p.eye = vec3_make(-31.25, -187.5000000000001, 23.5);
 	p.look = vec3_make(1.0 / 3.0, 0.1, 4.75);
 	p.up = vec3_make(0.0625, 0.1, 0.99);
-	command_settings(&set, &given, s, &p);
+	cli_settings(&set, &given, s, &p);
 	assert_true(set.floor_from_view);
 	assert_true(set.floor_mat.ka == 0.1 && set.floor_mat.kd == 0.3 && set.floor_mat.kr == 0.6);
 	assert_int_equal(command_format(cmd, sizeof(cmd), path, RT_DIALECT_AUTO, &set), 0);
@@ -230,7 +230,7 @@ static void test_command_carries_dialect_and_floor(void **state)
 	given.floor_width = 1000.0;
 	given.floor_tile = 20.0;
 	assert_int_equal(load_quiet(&given, path, &s, &cam), 0);
-	command_settings(&set, &given, s, &given.camera);
+	cli_settings(&set, &given, s, &given.camera);
 	assert_false(set.floor_from_view);
 	scene_destroy(s);
 	assert_int_equal(command_format(cmd, sizeof(cmd), path, RT_DIALECT_NEARFAR, &set), 0);
