@@ -22,21 +22,12 @@ struct grade_work {
 
 #define GRADE_CHUNK 256
 
-/* camera_ray through the point (x + cx, y + cy) of the image, cx = cy =
- * 0.5 being the centre, with camera_ray's own arithmetic (so that a
- * corner on the axis is exactly on it, as in the student's program). */
+/* The ray through the point (x + cx, y + cy) of the image, cx = cy = 0.5
+ * being the centre: camera_ray's own arithmetic (x + cx is exact), so that
+ * a corner on the axis is exactly on it, as in the student's program. */
 static struct ray grade_corner_ray(const struct camera *c, int x, int y, double cx, double cy)
 {
-	double u = (x + cx) * c->pixel_scale_x - c->half_width;
-	double v = c->half_height - (y + cy) * c->pixel_scale;
-	struct vec3 w = vec3_add(c->forward, vec3_add(vec3_scale(c->right, u), vec3_scale(c->up, v)));
-	struct ray r;
-
-	r.origin = c->eye;
-	if (c->near > 0.0)
-		r.origin = vec3_add_scaled(r.origin, w, c->near);
-	r.dir = vec3_normalize(w);
-	return r;
+	return camera_ray_at(c, x + cx, y + cy);
 }
 
 struct color grade_variant_trace(const struct grade_job *job, const struct grade_variant *v,

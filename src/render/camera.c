@@ -88,19 +88,35 @@ int camera_init_rect(struct camera *c, const struct camera_params *p, int width,
 	return 0;
 }
 
-struct ray camera_ray(const struct camera *c, int px, int py)
+/* The ray through w, a point of the image plane at distance 1 from the
+ * eye: from the eye (or the near plane's point along it), towards w.  The
+ * one place a primary ray is made of its point; camera_lanes_lanes.h is
+ * its vector twin, lane for lane. */
+static inline struct ray camera_ray_through(const struct camera *c, struct vec3 w)
 {
-	double u = (px + 0.5) * c->pixel_scale_x - c->half_width;
-	double v = c->half_height - (py + 0.5) * c->pixel_scale;
-	struct vec3 w = vec3_add(c->forward, vec3_add(vec3_scale(c->right, u), vec3_scale(c->up, v)));
 	struct ray r;
 
-	/* w is the pixel's centre on the plane at distance 1. */
 	r.origin = c->eye;
 	if (c->near > 0.0)
 		r.origin = vec3_add_scaled(r.origin, w, c->near);
 	r.dir = vec3_normalize(w);
 	return r;
+}
+
+struct ray camera_ray_at(const struct camera *c, double x, double y)
+{
+	double u = x * c->pixel_scale_x - c->half_width;
+	double v = c->half_height - y * c->pixel_scale;
+
+	return camera_ray_through(c, vec3_add(c->forward, vec3_add(vec3_scale(c->right, u),
+								   vec3_scale(c->up, v))));
+}
+
+/* The pixel's centre: x + 0.5 is exact for any pixel, so these are
+ * camera_ray_at's very operations. */
+struct ray camera_ray(const struct camera *c, int px, int py)
+{
+	return camera_ray_at(c, px + 0.5, py + 0.5);
 }
 
 void camera_span_init(struct camera_span *sp, const struct camera *c, int x0, int x1)
@@ -124,26 +140,6 @@ void camera_span_rays(const struct camera_span *sp, const struct camera *c, int 
 	struct vec3 up_v = vec3_scale(c->up, v);
 	int i;
 
-	for (i = 0; i < sp->n; i++) {
-		struct vec3 w = vec3_add(c->forward, vec3_add(sp->right_u[i], up_v));
-
-		out[i].origin = c->eye;
-		if (c->near > 0.0)
-			out[i].origin = vec3_add_scaled(out[i].origin, w, c->near);
-		out[i].dir = vec3_normalize(w);
-	}
-}
-
-struct ray camera_ray_at(const struct camera *c, double x, double y)
-{
-	double u = x * c->pixel_scale_x - c->half_width;
-	double v = c->half_height - y * c->pixel_scale;
-	struct vec3 w = vec3_add(c->forward, vec3_add(vec3_scale(c->right, u), vec3_scale(c->up, v)));
-	struct ray r;
-
-	r.origin = c->eye;
-	if (c->near > 0.0)
-		r.origin = vec3_add_scaled(r.origin, w, c->near);
-	r.dir = vec3_normalize(w);
-	return r;
+	for (i = 0; i < sp->n; i++)
+		out[i] = camera_ray_through(c, vec3_add(c->forward, vec3_add(sp->right_u[i], up_v)));
 }
