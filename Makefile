@@ -139,7 +139,7 @@ UNIT_DATA_DIR ?= $(abspath tests/data)
 # slow cross-validations last.  README's "Tests" lists the same.
 SUITES := layout unit clitest dialects manpages valgrind disttest faults fuzz-replay threadcheck features \
 	portablecheck wintest imgcmptest povcheck refcheck mistakecheck comparetest explaintest reportcheck webtest viewer-e2e \
-	install-test newshape plugintest embreecheck
+	install-test newshape newisa plugintest embreecheck
 
 .PHONY: web webtest windows wintest all render check deps check-deps install clean bench fuzz fuzz-images fuzz-plugins plugins FORCE \
 	$(SUITES)
@@ -465,6 +465,8 @@ install-test: all plugins
 	@tests/cli/install-test.sh
 newshape: all
 	@tests/cli/newshape.sh
+newisa: all
+	@tests/cli/newisa.sh
 plugintest: all plugins
 	@tests/cli/plugins.sh
 
