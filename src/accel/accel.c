@@ -14,12 +14,7 @@
 #include "accel/accel_tree.h"
 #include "base/simd.h"
 
-#define KERNELS_DECLARE(set, suffix) extern const struct accel_kernels accel_kernels_##suffix;
-RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
-#define KERNELS_ENTRY(set, suffix) [set] = &accel_kernels_##suffix,
-static const struct accel_kernels *const accel_sets[RT_SIMD_COUNT] = {
-	RT_SIMD_BUILT_SETS(KERNELS_ENTRY)
-};
+RT_SIMD_TABLES(struct accel_kernels, accel_kernels, accel_sets);
 
 const struct accel_kernels *accel_kernels_of(enum rt_simd s)
 {

@@ -48,8 +48,8 @@ int rt_simd_cpu_has(enum rt_simd s)
 
 bool rt_simd_built(enum rt_simd s)
 {
-#define SIMD_IS(set, suffix) || s == set
-	return false RT_SIMD_BUILT_SETS(SIMD_IS);
+#define SIMD_IS(set, suffix, a, b) || s == set
+	return false RT_SIMD_BUILT_SETS(SIMD_IS, -, -);
 #undef SIMD_IS
 }
 

@@ -8,7 +8,7 @@
  * accel_kernels.c) that the Makefile compiles once per set this build has,
  * with its -m flags and -DRT_SIMD_KERNEL=<suffix>, into one table named
  * <prefix>_<suffix> (RT_SIMD_KERNEL_NAME); the module's tables, indexed by
- * set, come from RT_SIMD_BUILT_SETS.  A new set is this header (its enum
+ * set, come from RT_SIMD_TABLES.  A new set is this header (its enum
  * entry and its line in the list), its row in simd.c, its flags in the
  * Makefile and its lanes in base/lanes.h. */
 #ifndef RT_SIMD_H
@@ -23,14 +23,14 @@ enum rt_simd {
 	RT_SIMD_COUNT
 };
 
-/* X(set, suffix) for each set whose kernels this build compiled: on
- * x86-64 the Makefile says RT_SIMD_X86_KERNELS (not for Windows, whose
+/* X(set, suffix, a, b) for each set whose kernels this build compiled:
+ * on x86-64 the Makefile says RT_SIMD_X86_KERNELS (not for Windows, whose
  * compiler misaligns the wide spills, nor for the web); elsewhere the
  * baseline alone. */
 #ifdef RT_SIMD_X86_KERNELS
-#define RT_SIMD_BUILT_SETS(X) X(RT_SIMD_BASE, base) X(RT_SIMD_AVX2, avx2) X(RT_SIMD_AVX512, avx512)
+#define RT_SIMD_BUILT_SETS(X, a, b) X(RT_SIMD_BASE, base, a, b) X(RT_SIMD_AVX2, avx2, a, b) X(RT_SIMD_AVX512, avx512, a, b)
 #else
-#define RT_SIMD_BUILT_SETS(X) X(RT_SIMD_BASE, base)
+#define RT_SIMD_BUILT_SETS(X, a, b) X(RT_SIMD_BASE, base, a, b)
 #endif
 
 /* In a kernel source: the name of its table in the set being compiled. */
@@ -38,12 +38,15 @@ enum rt_simd {
 #define RT_SIMD_CAT(a, b) RT_SIMD_CAT_(a, b)
 #define RT_SIMD_KERNEL_NAME(prefix) RT_SIMD_CAT(prefix, RT_SIMD_KERNEL)
 
-/* A module lists its tables by set, NULL for a set not built:
- *   #define KERNELS_DECLARE(set, suffix) extern const struct k k_##suffix;
- *   RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
- *   #define KERNELS_ENTRY(set, suffix) [set] = &k_##suffix,
- *   static const struct k *const sets[RT_SIMD_COUNT] = { RT_SIMD_BUILT_SETS(KERNELS_ENTRY) };
- */
+/* In a module: its tables (of type, named prefix_<suffix>) declared and
+ * listed by set in the array name, NULL for a set not built. */
+#define RT_SIMD_DECLARE_(set, suffix, type, prefix) extern const type prefix##_##suffix;
+#define RT_SIMD_ENTRY_(set, suffix, type, prefix) [set] = &prefix##_##suffix,
+#define RT_SIMD_TABLES(type, prefix, name) \
+	RT_SIMD_BUILT_SETS(RT_SIMD_DECLARE_, type, prefix) \
+	static const type *const name[RT_SIMD_COUNT] = { \
+		RT_SIMD_BUILT_SETS(RT_SIMD_ENTRY_, type, prefix) \
+	}
 
 /* The set in use: the widest the processor runs and the build has
  * (the portable build: RT_SIMD_BASE), within WHITTED_ISA's limit. */

@@ -5,12 +5,7 @@
 
 #include "render/render_kernels.h"
 
-#define KERNELS_DECLARE(set, suffix) extern const struct render_kernels render_kernels_##suffix;
-RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
-#define KERNELS_ENTRY(set, suffix) [set] = &render_kernels_##suffix,
-static const struct render_kernels *const render_sets[RT_SIMD_COUNT] = {
-	RT_SIMD_BUILT_SETS(KERNELS_ENTRY)
-};
+RT_SIMD_TABLES(struct render_kernels, render_kernels, render_sets);
 
 const struct render_kernels *render_kernels_of(enum rt_simd s)
 {

@@ -5,12 +5,7 @@
 #include "base/simd.h"
 #include "shapes/solve_packet.h"
 
-#define KERNELS_DECLARE(set, suffix) extern const struct solve_packet_set solve_kernels_##suffix;
-RT_SIMD_BUILT_SETS(KERNELS_DECLARE)
-#define KERNELS_ENTRY(set, suffix) [set] = &solve_kernels_##suffix,
-static const struct solve_packet_set *const solve_sets[RT_SIMD_COUNT] = {
-	RT_SIMD_BUILT_SETS(KERNELS_ENTRY)
-};
+RT_SIMD_TABLES(struct solve_packet_set, solve_kernels, solve_sets);
 
 const struct solve_packet_set *solve_packet_set_of(enum rt_simd s)
 {

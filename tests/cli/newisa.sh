@@ -49,8 +49,8 @@ def edit(path, old, new):
         sys.exit("newisa: %s: the recipe's anchor is gone: %r" % (path, old))
     open(p, "w").write(s.replace(old, new, 1))
 edit("src/base/simd.h", "\tRT_SIMD_AVX2,\n", "\tRT_SIMD_SSE41,\n\tRT_SIMD_AVX2,\n")
-edit("src/base/simd.h", "X(RT_SIMD_BASE, base) X(RT_SIMD_AVX2, avx2)",
-     "X(RT_SIMD_BASE, base) X(RT_SIMD_SSE41, sse41) X(RT_SIMD_AVX2, avx2)")
+edit("src/base/simd.h", "X(RT_SIMD_BASE, base, a, b) X(RT_SIMD_AVX2, avx2, a, b)",
+     "X(RT_SIMD_BASE, base, a, b) X(RT_SIMD_SSE41, sse41, a, b) X(RT_SIMD_AVX2, avx2, a, b)")
 edit("src/base/simd.c", "static int simd_cpu_avx2(void)",
      "static int simd_cpu_sse41(void)\n{\n\treturn SIMD_CPU(\"sse4.1\");\n}\n\nstatic int simd_cpu_avx2(void)")
 edit("src/base/simd.c", "\t[RT_SIMD_AVX2] = {", "\t[RT_SIMD_SSE41] = { \"sse41\", simd_cpu_sse41 },\n\t[RT_SIMD_AVX2] = {")
