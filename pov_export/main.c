@@ -100,8 +100,7 @@ static int pov_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("scene2pov %s%s%s\n", RT_VERSION, rt_platform_note()[0] ? "\n" : "",
-		       rt_platform_note());
+		tool_print_version("scene2pov");
 		exit(0);
 	}
 	return -1;

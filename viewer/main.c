@@ -85,7 +85,7 @@ static int viewer_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("whitted-view %s\n", RT_VERSION);
+		tool_print_version("whitted-view");
 		exit(0);
 	}
 	return -1;

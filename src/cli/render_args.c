@@ -293,8 +293,7 @@ static int render_option(void *ctx, int c, const char *arg)
 		usage(stdout);
 		exit(0);
 	case 'V':
-		printf("whitted %s%s%s\n", RT_VERSION, rt_platform_note()[0] ? "\n" : "",
-		       rt_platform_note());
+		tool_print_version("whitted");
 		exit(0);
 	}
 	return -1;

@@ -5,8 +5,10 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/platform.h"
 #include "cli/suggest.h"
 #include "cli/tool.h"
+#include "whitted/version.h"
 
 static const char *name = "whitted";
 
@@ -67,4 +69,10 @@ void tool_print_note(void *quiet, const struct diag *note)
 int tool_status_of(int rc)
 {
 	return rc == -RT_E_INVALID ? TOOL_EXIT_USAGE : TOOL_EXIT_FAILURE;
+}
+
+void tool_print_version(const char *program)
+{
+	printf("%s %s%s%s\n", program, RT_VERSION, rt_platform_note()[0] ? "\n" : "",
+	       rt_platform_note());
 }

@@ -34,6 +34,9 @@ int tool_unknown_option(const char *arg, const struct option *longopts);
 void tool_print_diag(const struct diag *d, const char *kind);
 /* A diag_note_fn: prints the note unless *(const bool *)quiet is true. */
 void tool_print_note(void *quiet, const struct diag *note);
+/* --version's text on stdout: "PROGRAM VERSION" and, where the platform
+ * leaves something out, its note on the next line. */
+void tool_print_version(const char *program);
 /* The exit status for a failed library call: TOOL_EXIT_USAGE when the
  * command line was at fault (RT_E_INVALID), TOOL_EXIT_FAILURE otherwise. */
 int tool_status_of(int rc);
