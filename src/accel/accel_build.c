@@ -62,6 +62,9 @@ static uintptr_t leaf_slot(size_t first, size_t n)
  * builds it changes nothing. */
 #define BUILD_TASKS_MAX 256
 
+/* A subtree to build: over refs[first, first + n), with their box and
+ * centre bounds, as a child of node `parent`, its own node (if it is not
+ * a leaf) at index base, at this depth. */
 struct build_task {
 	size_t parent, first, n, base;
 	int depth;
@@ -79,46 +82,36 @@ struct build_pool {
 
 static void build_children(struct build *b, struct build_pool *pool, struct accel_bins *bins,
 			   size_t index, size_t first, size_t n, size_t split, int depth,
-			   const struct build_box bounds[4]);
+			   const struct build_parts *parts);
 
-/* Builds the subtree over refs[first, first + n), with the given box and
- * centre bounds, as child c of node `parent`: a leaf, or the node at index
- * base and what lies below it. */
-static void build_child(struct build *b, struct build_pool *pool, struct accel_bins *bins,
-			size_t parent, int c, size_t first, size_t n, size_t base, int depth,
-			const struct build_box *box, const struct build_box *centres)
+/* Builds task t's subtree as child c of its parent: a leaf, or the node
+ * at t->base and what lies below it. */
+static void build_child(struct build *b, struct build_pool *pool, struct accel_bins *bins, int c,
+			const struct build_task *t)
 {
-	struct build_box bounds[4];
+	struct build_parts parts;
 	size_t split;
 
 	/* One ref is a leaf (half the children): no search. */
-	split = n > 1 ? accel_choose_split(b->refs + first, n, depth, box, centres, bounds, bins) : 0;
+	split = t->n > 1 ? accel_choose_split(b->refs + t->first, t->n, t->depth, &t->box, &t->centres,
+					      &parts, bins) : 0;
 	if (split == 0) {
-		b->nodes[parent].slot[c] = leaf_slot(first, n);
+		b->nodes[t->parent].slot[c] = leaf_slot(t->first, t->n);
 		return;
 	}
-	b->nodes[parent].slot[c] = accel_slot_make(base, ACCEL_SLOT_NODE);
-	build_children(b, pool, bins, base, first, n, split, depth + 1, bounds);
+	b->nodes[t->parent].slot[c] = accel_slot_make(t->base, ACCEL_SLOT_NODE);
+	build_children(b, pool, bins, t->base, t->first, t->n, split, t->depth + 1, &parts);
 }
 
 /* Offers the right-hand child of a big node to the other threads; false
  * when the caller is to build it. */
-static bool pool_offer(struct build_pool *pool, size_t parent, size_t first, size_t n,
-		       size_t base, int depth, const struct build_box *box,
-		       const struct build_box *centres)
+static bool pool_offer(struct build_pool *pool, const struct build_task *t)
 {
 	bool taken = false;
 
 	pthread_mutex_lock(&pool->lock);
 	if (pool->n_tasks < BUILD_TASKS_MAX) {
-		struct build_task *t = &pool->task[pool->n_tasks++];
-		t->parent = parent;
-		t->first = first;
-		t->n = n;
-		t->base = base;
-		t->depth = depth;
-		t->box = *box;
-		t->centres = *centres;
+		pool->task[pool->n_tasks++] = *t;
 		taken = true;
 		pthread_cond_signal(&pool->cond);
 	}
@@ -131,19 +124,25 @@ static bool pool_offer(struct build_pool *pool, size_t parent, size_t first, siz
  * slot of the node. */
 static void build_children(struct build *b, struct build_pool *pool, struct accel_bins *bins,
 			   size_t index, size_t first, size_t n, size_t split, int depth,
-			   const struct build_box bounds[4])
+			   const struct build_parts *parts)
 {
+	const struct build_task front = {
+		.parent = index, .first = first, .n = split, .base = index + 1, .depth = depth,
+		.box = parts->front, .centres = parts->front_centres,
+	};
+	const struct build_task back = {
+		.parent = index, .first = first + split, .n = n - split, .base = index + split,
+		.depth = depth, .box = parts->back, .centres = parts->back_centres,
+	};
 	bool offered;
 
-	accel_set_child_box(&b->nodes[index], 0, &bounds[0]);
-	accel_set_child_box(&b->nodes[index], 1, &bounds[2]);
+	accel_set_child_box(&b->nodes[index], 0, &parts->front);
+	accel_set_child_box(&b->nodes[index], 1, &parts->back);
 	offered = pool && split >= ACCEL_PARALLEL_MIN && n - split >= ACCEL_PARALLEL_MIN &&
-		  pool_offer(pool, index, first + split, n - split, index + split, depth,
-			     &bounds[2], &bounds[3]);
-	build_child(b, pool, bins, index, 0, first, split, index + 1, depth, &bounds[0], &bounds[1]);
+		  pool_offer(pool, &back);
+	build_child(b, pool, bins, 0, &front);
 	if (!offered)
-		build_child(b, pool, bins, index, 1, first + split, n - split, index + split, depth,
-			    &bounds[2], &bounds[3]);
+		build_child(b, pool, bins, 1, &back);
 }
 
 /* A thread of the pool: takes tasks until there are none and no thread
@@ -164,8 +163,7 @@ static void *pool_work(void *arg)
 		t = pool->task[--pool->n_tasks];
 		pool->busy++;
 		pthread_mutex_unlock(&pool->lock);
-		build_child(pool->b, pool, &bins, t.parent, 1, t.first, t.n, t.base, t.depth,
-			    &t.box, &t.centres);
+		build_child(pool->b, pool, &bins, 1, &t);
 		pthread_mutex_lock(&pool->lock);
 		pool->busy--;
 	}
@@ -179,7 +177,7 @@ static void *pool_work(void *arg)
  * one and threads - 1 others (fewer when they cannot be started; with
  * none, this one builds everything). */
 static void build_parallel(struct build *b, struct accel_bins *bins, size_t n, size_t split,
-			   const struct build_box bounds[4], int threads)
+			   const struct build_parts *parts, int threads)
 {
 	struct build_pool pool;
 	pthread_t thread[64];
@@ -189,12 +187,12 @@ static void build_parallel(struct build *b, struct accel_bins *bins, size_t n, s
 		threads = 64;
 	if (threads < 2 || n < 2 * ACCEL_PARALLEL_MIN ||
 	    pthread_mutex_init(&pool.lock, NULL) != 0) {
-		build_children(b, NULL, bins, 0, 0, n, split, 1, bounds);
+		build_children(b, NULL, bins, 0, 0, n, split, 1, parts);
 		return;
 	}
 	if (pthread_cond_init(&pool.cond, NULL) != 0) {
 		pthread_mutex_destroy(&pool.lock);
-		build_children(b, NULL, bins, 0, 0, n, split, 1, bounds);
+		build_children(b, NULL, bins, 0, 0, n, split, 1, parts);
 		return;
 	}
 	pool.b = b;
@@ -207,7 +205,7 @@ static void build_parallel(struct build *b, struct accel_bins *bins, size_t n, s
 			break;
 		started++;
 	}
-	build_children(b, &pool, bins, 0, 0, n, split, 1, bounds);
+	build_children(b, &pool, bins, 0, 0, n, split, 1, parts);
 	pthread_mutex_lock(&pool.lock);
 	pool.busy--;
 	pthread_cond_broadcast(&pool.cond);
@@ -224,7 +222,8 @@ static void build_parallel(struct build *b, struct accel_bins *bins, size_t n, s
  * +inf and its maximum -inf on every axis). */
 static void build_root(struct build *b, size_t n, int threads)
 {
-	struct build_box box, centres, bounds[4];
+	struct build_box box, centres;
+	struct build_parts parts;
 	struct accel_bins bins;
 	size_t split;
 	int k;
@@ -232,7 +231,7 @@ static void build_root(struct build *b, size_t n, int threads)
 	accel_bins_init(&bins);
 	box = b->box;
 	centres = b->centres;
-	split = accel_choose_split(b->refs, n, 0, &box, &centres, bounds, &bins);
+	split = accel_choose_split(b->refs, n, 0, &box, &centres, &parts, &bins);
 	if (split == 0) {
 		accel_set_child_box(&b->nodes[0], 0, &box);
 		b->nodes[0].slot[0] = leaf_slot(0, n);
@@ -243,7 +242,7 @@ static void build_root(struct build *b, size_t n, int threads)
 		b->nodes[0].slot[1] = 0;
 		return;
 	}
-	build_parallel(b, &bins, n, split, bounds, threads);
+	build_parallel(b, &bins, n, split, &parts, threads);
 }
 
 /* The refs of the bounded shapes, in the scene's order, with their box and

@@ -68,22 +68,30 @@ void accel_boxes_grow(struct build_box *box, struct build_box *centres, const st
  * bounds, found with up to `threads` threads; returns how many. */
 size_t accel_collect_refs(struct build_ref *refs, struct shape *const *shapes, size_t n_shapes,
 			  int threads, struct build_box *box, struct build_box *centres);
+/* The two parts of a node's refs at a split: each one's box and the
+ * bounds of its refs' centres (the children's boxes, and what their own
+ * splits are searched over). */
+struct build_parts {
+	struct build_box front, front_centres;
+	struct build_box back, back_centres;
+};
+
 /* Where to split refs[0, n), whose box and centre bounds are given
- * (sorting them so), or 0 to make them a leaf; bounds receives the box
+ * (sorting them so), or 0 to make them a leaf; parts receives the box
  * and centre bounds of both parts. */
 size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
-		    const struct build_box *centres, struct build_box bounds[4],
+		    const struct build_box *centres, struct build_parts *parts,
 		    struct accel_bins *bins);
 /* Moves the refs whose centre lies below pos along axis to the front and
- * returns how many there are; bounds receives the box and the centre
- * bounds of the front part, then of the back part. */
+ * returns how many there are; parts receives the box and the centre
+ * bounds of the front part and of the back part. */
 size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
-		       struct build_box bounds[4]);
+		       struct build_parts *parts);
 /* accel_choose_split without the short cut for two refs: every node
  * binned, as the short cut must match (for the tests). */
 size_t accel_choose_split_binned(struct build_ref *refs, size_t n, int depth,
 				 const struct build_box *box, const struct build_box *centres,
-				 struct build_box bounds[4], struct accel_bins *bins);
+				 struct build_parts *parts, struct accel_bins *bins);
 /* Child c's box in the node, rounded outwards to floats. */
 void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *box);
 

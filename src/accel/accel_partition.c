@@ -10,8 +10,8 @@
 #include "accel/accel_box.h"
 
 /* Moves the refs whose centre lies below pos along axis to the front and
- * returns how many there are; bounds receives the box and the centre
- * bounds of the front part, then of the back part.  Each ref met at the
+ * returns how many there are; parts receives the box and the centre
+ * bounds of the front part and of the back part.  Each ref met at the
  * front is either kept or swapped with the last unsorted one, which is
  * looked at next. */
 #if defined(__SSE2__) && !defined(ACCEL_PORTABLE)
@@ -86,7 +86,7 @@ static void side_store(const struct side_regs *s, struct build_box *box, struct 
  * cache), and each ref is read once.  The centre along axis is the plain
  * C's (lo + hi) * 0.5, compared with pos as it does. */
 size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
-		       struct build_box bounds[4])
+		       struct build_parts *parts)
 {
 	const __m128d half = _mm_set1_pd(0.5), p = _mm_set1_pd(pos);
 	struct side_regs left, right;
@@ -118,27 +118,27 @@ size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
 			cur = next;
 		}
 	}
-	side_store(&left, &bounds[0], &bounds[1]);
-	side_store(&right, &bounds[2], &bounds[3]);
+	side_store(&left, &parts->front, &parts->front_centres);
+	side_store(&right, &parts->back, &parts->back_centres);
 	return i;
 }
 #else
 size_t accel_partition(struct build_ref *refs, size_t n, int axis, double pos,
-		       struct build_box bounds[4])
+		       struct build_parts *parts)
 {
 	size_t i = 0, j = n;
 
-	box_empty(&bounds[0]);
-	box_empty(&bounds[1]);
-	box_empty(&bounds[2]);
-	box_empty(&bounds[3]);
+	box_empty(&parts->front);
+	box_empty(&parts->front_centres);
+	box_empty(&parts->back);
+	box_empty(&parts->back_centres);
 	while (i < j) {
 		if (ref_centre(&refs[i], axis) < pos) {
-			bounds_add_ref(&bounds[0], &bounds[1], &refs[i]);
+			bounds_add_ref(&parts->front, &parts->front_centres, &refs[i]);
 			i++;
 		} else {
 			struct build_ref tmp = refs[i];
-			bounds_add_ref(&bounds[2], &bounds[3], &tmp);
+			bounds_add_ref(&parts->back, &parts->back_centres, &tmp);
 			refs[i] = refs[--j];
 			refs[j] = tmp;
 		}

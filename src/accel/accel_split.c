@@ -328,7 +328,7 @@ void accel_set_child_box(struct bvh_node *node, int c, const struct build_box *b
 	}
 }
 /* Where to split refs[0, n), whose box and centre bounds are
- * given (sorting them so), or 0 to make them a leaf; bounds receives the
+ * given (sorting them so), or 0 to make them a leaf; parts receives the
  * box and centre bounds of both parts. */
 /* The box a bin holding only ref r has, as the binning makes it. */
 static inline void bin_box_of(struct build_box *b, const struct build_ref *r)
@@ -377,7 +377,7 @@ static bool pair_split(const struct build_ref refs[2], const struct build_box *b
 }
 
 static size_t choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
-			   const struct build_box *centres, struct build_box bounds[4],
+			   const struct build_box *centres, struct build_parts *parts,
 			   struct accel_bins *bins, bool pairs)
 {
 	size_t split = 0;
@@ -389,25 +389,25 @@ static size_t choose_split(struct build_ref *refs, size_t n, int depth, const st
 		found = n == 2 && pairs ? pair_split(refs, box, centres, &axis, &pos) :
 			sah_split(refs, n, box, centres, bins->bin, &axis, &pos);
 	if (found)
-		split = accel_partition(refs, n, axis, pos, bounds);
+		split = accel_partition(refs, n, axis, pos, parts);
 	if ((split == 0 || split == n) && n > ACCEL_LEAF_MAX) {
 		split = median_split(refs, n, centres);
-		accel_refs_bounds(refs, split, &bounds[0], &bounds[1]);
-		accel_refs_bounds(refs + split, n - split, &bounds[2], &bounds[3]);
+		accel_refs_bounds(refs, split, &parts->front, &parts->front_centres);
+		accel_refs_bounds(refs + split, n - split, &parts->back, &parts->back_centres);
 	}
 	return split == n ? 0 : split;
 }
 
 size_t accel_choose_split(struct build_ref *refs, size_t n, int depth, const struct build_box *box,
-			  const struct build_box *centres, struct build_box bounds[4],
+			  const struct build_box *centres, struct build_parts *parts,
 			  struct accel_bins *bins)
 {
-	return choose_split(refs, n, depth, box, centres, bounds, bins, true);
+	return choose_split(refs, n, depth, box, centres, parts, bins, true);
 }
 
 size_t accel_choose_split_binned(struct build_ref *refs, size_t n, int depth,
 				 const struct build_box *box, const struct build_box *centres,
-				 struct build_box bounds[4], struct accel_bins *bins)
+				 struct build_parts *parts, struct accel_bins *bins)
 {
-	return choose_split(refs, n, depth, box, centres, bounds, bins, false);
+	return choose_split(refs, n, depth, box, centres, parts, bins, false);
 }

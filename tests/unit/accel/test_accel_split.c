@@ -77,24 +77,26 @@ static void grow(struct build_box *box, struct build_box *centres, const struct 
 }
 
 static size_t plain_partition(struct build_ref *refs, size_t n, int axis, double pos,
-			      struct build_box bounds[4])
+			      struct build_parts *parts)
 {
+	struct build_box *const all[4] = { &parts->front, &parts->front_centres, &parts->back,
+					   &parts->back_centres };
 	size_t i = 0, j = n;
 	int b, k;
 
 	for (b = 0; b < 4; b++) {
 		for (k = 0; k < 3; k++) {
-			bounds[b].lo[k] = INFINITY;
-			bounds[b].hi[k] = -INFINITY;
+			all[b]->lo[k] = INFINITY;
+			all[b]->hi[k] = -INFINITY;
 		}
 	}
 	while (i < j) {
 		if (centre(&refs[i], axis) < pos) {
-			grow(&bounds[0], &bounds[1], &refs[i]);
+			grow(&parts->front, &parts->front_centres, &refs[i]);
 			i++;
 		} else {
 			struct build_ref tmp = refs[i];
-			grow(&bounds[2], &bounds[3], &tmp);
+			grow(&parts->back, &parts->back_centres, &tmp);
 			refs[i] = refs[--j];
 			refs[j] = tmp;
 		}
@@ -107,7 +109,7 @@ static size_t plain_partition(struct build_ref *refs, size_t n, int axis, double
 static void test_accel_split_partition_matches_plain_loop(void **state)
 {
 	static struct build_ref a[MAX_REFS], b[MAX_REFS];
-	struct build_box ba[4], bb[4];
+	struct build_parts ba, bb;
 	int round;
 
 	(void)state;
@@ -120,17 +122,18 @@ static void test_accel_split_partition_matches_plain_loop(void **state)
 		for (i = 0; i < n; i++)
 			random_ref(&a[i], i);
 		memcpy(b, a, n * sizeof(*a));
-		split = accel_partition(a, n, axis, pos, ba);
-		assert_int_equal(split, plain_partition(b, n, axis, pos, bb));
+		split = accel_partition(a, n, axis, pos, &ba);
+		assert_int_equal(split, plain_partition(b, n, axis, pos, &bb));
 		assert_memory_equal(a, b, n * sizeof(*a) + (n == 0));
-		assert_memory_equal(ba, bb, sizeof(ba));
+		assert_memory_equal(&ba, &bb, sizeof(ba));
 	}
 }
 
 static void test_accel_split_pairs_match_binning(void **state)
 {
 	struct build_ref a[2], b[2];
-	struct build_box box, centres, ba[4], bb[4];
+	struct build_box box, centres;
+	struct build_parts ba, bb;
 	struct accel_bins bins;
 	int round, splits = 0;
 
@@ -147,13 +150,13 @@ static void test_accel_split_pairs_match_binning(void **state)
 			a[1] = a[0];
 		accel_refs_bounds(a, 2, &box, &centres);
 		memcpy(b, a, sizeof(a));
-		memset(ba, 0x5a, sizeof(ba));
-		memset(bb, 0x5a, sizeof(bb));
-		sa = accel_choose_split(a, 2, depth, &box, &centres, ba, &bins);
-		sb = accel_choose_split_binned(b, 2, depth, &box, &centres, bb, &bins);
+		memset(&ba, 0x5a, sizeof(ba));
+		memset(&bb, 0x5a, sizeof(bb));
+		sa = accel_choose_split(a, 2, depth, &box, &centres, &ba, &bins);
+		sb = accel_choose_split_binned(b, 2, depth, &box, &centres, &bb, &bins);
 		assert_int_equal(sa, sb);
 		assert_memory_equal(a, b, sizeof(a));
-		assert_memory_equal(ba, bb, sizeof(ba));
+		assert_memory_equal(&ba, &bb, sizeof(ba));
 		splits += sa != 0;
 	}
 	/* Most random pairs split, some do not: both ways were tried. */
