@@ -37,8 +37,8 @@ bool accel_occluded(const struct accel *a, const struct ray *r, double t_min, do
 void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 			    const double *t_min, double *t_max, const struct shape **hit)
 {
-	if (a->walk->intersect_packet)
-		a->walk->intersect_packet(a, r, n, t_min, t_max, hit);
+	if (a->walk->wide.intersect_packet)
+		a->walk->wide.intersect_packet(a, r, n, t_min, t_max, hit);
 	else
 		a->rays->rays4.intersect_packet(a, r, n, t_min, t_max, hit);
 }
@@ -46,8 +46,8 @@ void accel_intersect_packet(const struct accel *a, const struct ray *r, int n,
 uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n,
 			       const double *t_min, const double *t_max)
 {
-	if (a->walk->occluded_packet)
-		return a->walk->occluded_packet(a, r, n, t_min, t_max);
+	if (a->walk->wide.occluded_packet)
+		return a->walk->wide.occluded_packet(a, r, n, t_min, t_max);
 	return a->rays->rays4.occluded_packet(a, r, n, t_min, t_max);
 }
 
@@ -59,9 +59,9 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 	int bit[ACCEL_PACKET], n = 0, i;
 	uint32_t m, packed, blocked = 0;
 
-	if (a->walk->occluded_lanes)
-		return a->walk->occluded_lanes(a, p, active, t_min, t_max);
-	if (!a->walk->occluded_packet)
+	if (a->walk->wide.occluded_lanes)
+		return a->walk->wide.occluded_lanes(a, p, active, t_min, t_max);
+	if (!a->walk->wide.occluded_packet)
 		return a->rays->rays4.occluded_lanes(a, p, active, t_min, t_max);
 	/* The other wide trees' packets take the rays one by one. */
 	for (m = active; m; m &= m - 1) {
@@ -88,11 +88,11 @@ void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, ui
 	int bit[ACCEL_PACKET], n = 0, i;
 	uint32_t m;
 
-	if (a->walk->intersect_lanes) {
-		a->walk->intersect_lanes(a, p, active, t_min, t_max, hit);
+	if (a->walk->wide.intersect_lanes) {
+		a->walk->wide.intersect_lanes(a, p, active, t_min, t_max, hit);
 		return;
 	}
-	if (!a->walk->intersect_packet) {
+	if (!a->walk->wide.intersect_packet) {
 		a->rays->rays4.intersect_lanes(a, p, active, t_min, t_max, hit);
 		return;
 	}
@@ -120,7 +120,7 @@ bool accel_packets_pay(const struct accel *a)
 
 bool accel_packets_scatter_pay(const struct accel *a)
 {
-	return !a->walk->intersect_packet && a->rays_set != RT_SIMD_BASE;
+	return !a->walk->wide.intersect_packet && a->rays_set != RT_SIMD_BASE;
 }
 
 bool accel_packets_wanted(const struct accel *a)

@@ -14,10 +14,9 @@
 #include "accel/accel_tree.h"
 #include "base/simd.h"
 
-/* Packets a ray a vector lane through a four-child tree (a small
- * scene's), with the contracts of accel_intersect_packet,
+/* Packets through a tree, with the contracts of accel_intersect_packet,
  * accel_occluded_packet, accel_intersect_lanes and accel_occluded_lanes. */
-struct accel_rays4 {
+struct accel_packet_walks {
 	void (*intersect_packet)(const struct accel *a, const struct ray *r, int n,
 				 const double *t_min, double *t_max, const struct shape **hit);
 	uint32_t (*occluded_packet)(const struct accel *a, const struct ray *r, int n,
@@ -37,22 +36,15 @@ struct accel_kernels {
 	const struct shape *(*intersect)(const struct accel *a, const struct ray *r, double t_min,
 					 double *t_max);
 	bool (*occluded)(const struct accel *a, const struct ray *r, double t_min, double t_max);
-	/* Packets through a wide tree; NULL in a set whose tree has four
-	 * children, whose packets go through rays4 of the set in use. */
-	void (*intersect_packet)(const struct accel *a, const struct ray *r, int n,
-				 const double *t_min, double *t_max, const struct shape **hit);
-	uint32_t (*occluded_packet)(const struct accel *a, const struct ray *r, int n,
-				    const double *t_min, const double *t_max);
-	/* Rays in place through a wide tree, a ray a vector lane; NULL: one
-	 * by one through the packets above. */
-	void (*intersect_lanes)(const struct accel *a, const struct ray_packet *p, uint32_t active,
-				const double *t_min, double *t_max, const struct shape **hit);
-	uint32_t (*occluded_lanes)(const struct accel *a, const struct ray_packet *p,
-				   uint32_t active, const double *t_min, const double *t_max);
-	/* How the packets above go, for --stats ("a child a lane"; NULL
-	 * with them). */
+	/* Packets through this set's wide tree (all NULL in a set whose tree
+	 * has four children, whose packets go through rays4 of the set in
+	 * use; the lanes NULL where the rays in place go one by one through
+	 * the packets), and how they go, for --stats ("a child a lane"). */
+	struct accel_packet_walks wide;
 	const char *packets;
-	struct accel_rays4 rays4;
+	/* Packets a ray a vector lane through a four-child tree (a small
+	 * scene's) in this set. */
+	struct accel_packet_walks rays4;
 #ifdef RT_TEST_HOOKS
 	/* For the tests (the test build only; NULL but in AVX-512): node's
 	 * children as the float test sees them for ray r in (t_min, t_max)

@@ -79,8 +79,10 @@ static inline int node_hits(const struct bvh8_node *node, const struct walk_ray 
 	.width = 8, \
 	.intersect = walk_avx2_intersect, \
 	.occluded = walk_avx2_occluded, \
-	.intersect_packet = walk_avx2_intersect_packet, \
-	.occluded_packet = walk_avx2_occluded_packet, \
+	.wide = { \
+		.intersect_packet = walk_avx2_intersect_packet, \
+		.occluded_packet = walk_avx2_occluded_packet, \
+	}, \
 	.packets = "a child a lane", \
 	.rays4 = ACCEL_KERNELS_RAYS4(rays_avx2), \
 	ACCEL_KERNELS_TEST_HOOKS(NULL, NULL) \

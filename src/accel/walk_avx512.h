@@ -343,10 +343,12 @@ static int walk_avx512_rays_node_tests(const struct bvh4_node *node, const struc
 	.width = 8, \
 	.intersect = walk_avx512_intersect, \
 	.occluded = walk_avx512_occluded, \
-	.intersect_packet = walk_avx512_intersect_packet, \
-	.occluded_packet = walk_avx512_occluded_packet, \
-	.intersect_lanes = rays8_avx512_intersect_lanes, \
-	.occluded_lanes = rays8_avx512_occluded_lanes, \
+	.wide = { \
+		.intersect_packet = walk_avx512_intersect_packet, \
+		.occluded_packet = walk_avx512_occluded_packet, \
+		.intersect_lanes = rays8_avx512_intersect_lanes, \
+		.occluded_lanes = rays8_avx512_occluded_lanes, \
+	}, \
 	.packets = "a ray a lane, few rays alone", \
 	.rays4 = ACCEL_KERNELS_RAYS4(rays_avx512), \
 	ACCEL_KERNELS_TEST_HOOKS(walk_avx512_node_tests, walk_avx512_rays_node_tests) \
