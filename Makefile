@@ -156,10 +156,10 @@ $(BUILD)/san/%.o: %.c
 define SIMD_KERNEL_RULES
 $(BUILD)/%_$(1).o: %.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -c $$< -o $$@
+	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -DRT_SIMD_KERNEL_$(1) -c $$< -o $$@
 $(BUILD)/san/%_$(1).o: %.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -O1 $$(SAN) -c $$< -o $$@
+	$$(CC) $$(ALL_CFLAGS) $$(SIMD_FLAGS_$(1)) -DRT_SIMD_KERNEL=$(1) -DRT_SIMD_KERNEL_$(1) -O1 $$(SAN) -c $$< -o $$@
 endef
 $(foreach s,$(SIMD_SETS),$(eval $(call SIMD_KERNEL_RULES,$(s))))
 
@@ -314,7 +314,7 @@ WIN_THIRD_OBJ := $(THIRD_SRC:$(THIRD)/%.c=$(WIN)/third/%.o)
 # The kernels in the baseline's instructions alone (see the AVX note above).
 $(WIN)/%_base.o: %.c $(THIRD)/.stamp
 	@mkdir -p $(@D)
-	$(WIN_CC) $(WIN_CFLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
+	$(WIN_CC) $(WIN_CFLAGS) -DRT_SIMD_KERNEL=base -DRT_SIMD_KERNEL_base -c $< -o $@
 WIN_LIB_OBJ := $(WIN_LIB_SRC:%.c=$(WIN)/%.o) $(KERNEL_SRC:%.c=$(WIN)/%_base.o) \
 	$(TOOLS_SRC:%.c=$(WIN)/%.o) $(WIN_THIRD_OBJ)
 $(WIN)/pov_export/%.o: WIN_CFLAGS += -Ipov_export
@@ -360,7 +360,7 @@ $(WEB_OBJ_DIR)/%.o: %.c $(THIRD)/.stamp
 # The kernels once, in WebAssembly's SIMD (the baseline's SSE2 turned).
 $(WEB_OBJ_DIR)/%_base.o: %.c $(THIRD)/.stamp
 	@mkdir -p $(@D)
-	$(EMCC) $(WEB_CFLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
+	$(EMCC) $(WEB_CFLAGS) -DRT_SIMD_KERNEL=base -DRT_SIMD_KERNEL_base -c $< -o $@
 # Debian's emscripten runs its optimiser under node with Debian's acorn
 # (node-acorn, in /usr/share/nodejs), which a node from elsewhere does not
 # look for.
@@ -482,7 +482,7 @@ $(BUILD)/fuzz/%.o: %.c
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
 $(BUILD)/fuzz/%_base.o: %.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) -DRT_SIMD_KERNEL=base -c $< -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) -DRT_SIMD_KERNEL=base -DRT_SIMD_KERNEL_base -c $< -o $@
 FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/fuzz/%.o) $(KERNEL_SRC:%.c=$(BUILD)/fuzz/%_base.o)
 $(BUILD)/fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c tests/fuzz/harness.c tests/fuzz/harness.h \
 	$(FUZZ_LIB_OBJ)

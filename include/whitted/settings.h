@@ -7,9 +7,9 @@
  *
  * A new option that changes pixels is: a member here, one row in that
  * table (its key, which is also its option's name, and its value's text),
- * and filling the member where the programs fill this struct
- * (settings_of in src/cli/render_cmd.c, command_settings in
- * viewer/command.c), besides parsing the option itself
+ * and filling the member where the programs fill this struct (cli_settings
+ * in src/cli/scene_jobs.c, for whitted, the page and the viewer), besides
+ * parsing the option itself
  * (src/cli/scene_opts.c).  Tiles, the viewer's command and --stats then
  * carry it with no further edit. */
 #ifndef RT_SETTINGS_H

@@ -1,9 +1,8 @@
 /* The hierarchy's walks in one set of instructions: compiled by the
  * Makefile once per set (with its -m flags and -DRT_SIMD_KERNEL=<suffix>)
  * into the table accel_kernels_<suffix> (accel_kernels.h).  The node tests
- * are the set's own (by what the compiler was asked for); a set without
- * its own, a new one among them, takes the base walks over base/lanes.h's
- * plain C or SSE2. */
+ * are the set's own; a set without its own, a new one among them, takes
+ * the base walks (SSE2, or plain C). */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -28,9 +27,12 @@
 #define ACCEL_KERNELS_TEST_HOOKS(node, rays)
 #endif
 
-#if defined(__AVX512F__) && !defined(ACCEL_PORTABLE)
+/* By the set being compiled (the Makefile's -DRT_SIMD_KERNEL_<suffix>),
+ * not by what the compiler allows: the base set's walks stay the
+ * four-child ones under -march=native too. */
+#if defined(RT_SIMD_KERNEL_avx512) && defined(__AVX512F__) && !defined(ACCEL_PORTABLE)
 #include "accel/walk_avx512.h"
-#elif defined(__AVX2__) && !defined(ACCEL_PORTABLE)
+#elif defined(RT_SIMD_KERNEL_avx2) && defined(__AVX2__) && !defined(ACCEL_PORTABLE)
 #include "accel/walk_avx2.h"
 #else
 #include "accel/walk_base.h"

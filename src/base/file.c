@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -50,6 +51,7 @@ static int file_read_stream(FILE *f, const char *name, const char *what, size_t 
 				rt_free(buf);
 				return file_too_large(name, limit, d);
 			}
+			/* limit + 2 cannot wrap: file_read_path caps the limit. */
 			cap = cap * 2 > limit + 2 ? limit + 2 : cap * 2;
 			p = rt_reallocarray(buf, cap, 1);
 			if (!p) {
@@ -153,6 +155,9 @@ static int file_read_path(const char *path, const char *what, size_t limit, bool
 
 	*out = NULL;
 	*out_len = 0;
+	/* The buffer is the limit and 2 bytes: kept from wrapping round. */
+	if (limit > SIZE_MAX / 2)
+		limit = SIZE_MAX / 2;
 	/* Standard input may be a terminal or a pipe nobody writes to: only
 	 * the scene is read from it. */
 	if (is_stdin && regular)

@@ -43,7 +43,8 @@ int rt_simd_cpu_has(enum rt_simd s)
 {
 	if (s == RT_SIMD_BASE)
 		return 1;
-	return SIMD_X86 && (unsigned)s < RT_SIMD_COUNT && simd_sets[s].cpu_has();
+	return SIMD_X86 && (unsigned)s < RT_SIMD_COUNT &&
+	       (!simd_sets[s].cpu_has || simd_sets[s].cpu_has());
 }
 
 bool rt_simd_built(enum rt_simd s)

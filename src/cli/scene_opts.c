@@ -45,8 +45,8 @@ const char cli_scene_help[] =
 	"                         order) glass: index of refraction IOR (default 1.5),\n"
 	"                         transmission KT in (0, 1) (default 0.8); repeatable\n"
 	"      --max-scene-size SIZE  the largest scene file read, in bytes or with K,\n"
-	"                         M, G (default an eighth of the memory the process\n"
-	"                         may use, at least 256M)\n"
+	"                         M, G or T (default an eighth of the memory the\n"
+	"                         process may use, at least 256M)\n"
 	"      --test-scene       the assignment's built-in test scene instead of a file\n"
 	"      --plugin FILE.so   load a primitive plugin (repeatable); every .so in the\n"
 	"                         directories of $WHITTED_PLUGIN_PATH (colon-separated)\n"
@@ -106,9 +106,9 @@ static int cli_parse_bytes(const char *opt, const char *arg, size_t *out, struct
 		scale = 1ULL << (10 * (u - units + 1));
 		p++;
 	}
-	if (p == arg || *p || n == 0 || n > (unsigned long long)SIZE_MAX / scale)
-		return diag_fail(d, RT_E_INVALID, "%s: expected a size in bytes, or with K, M or G "
-				 "(512M, 2G), found '%s'", opt, arg);
+	if (p == arg || *p || n == 0 || n > (unsigned long long)(SIZE_MAX / 2) / scale)
+		return diag_fail(d, RT_E_INVALID, "%s: expected a size in bytes, or with K, M, G "
+				 "or T (512M, 2G), at most half the address space, found '%s'", opt, arg);
 	*out = (size_t)(n * scale);
 	return 0;
 }

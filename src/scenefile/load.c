@@ -18,7 +18,8 @@ size_t scene_default_max_bytes(void)
 
 	if (mem < SCENE_MIN_MAX_BYTES)
 		return SCENE_MIN_MAX_BYTES;
-	return mem > (unsigned long long)SIZE_MAX ? SIZE_MAX : (size_t)mem;
+	/* Within half the address space (a 32-bit build on a big machine). */
+	return mem > (unsigned long long)(SIZE_MAX / 2) ? SIZE_MAX / 2 : (size_t)mem;
 }
 
 /* n bytes for a message: "256 MiB", "2.9 GiB", "100 KiB", "1000 bytes". */
@@ -31,7 +32,7 @@ static const char *scene_format_bytes(size_t n, char *buf, size_t size)
 	else if (n >= (size_t)1 << 10)
 		snprintf(buf, size, "%.0f KiB", (double)n / 1024.0);
 	else
-		snprintf(buf, size, "%zu bytes", n);
+		snprintf(buf, size, "%zu byte%s", n, n == 1 ? "" : "s");
 	return buf;
 }
 
