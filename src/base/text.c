@@ -81,3 +81,18 @@ int text_utf8_length(const unsigned char *s)
 		return 0;
 	return n;
 }
+
+const char *text_word_list(char *buf, size_t size, const char *prefix, const char *const *words,
+			   size_t n)
+{
+	size_t used = 0, i;
+
+	if (size > 0)
+		buf[0] = '\0';
+	for (i = 0; i < n && used < size; i++) {
+		int k = snprintf(buf + used, size - used, "%s%s%s",
+				 i == 0 ? "" : i + 1 == n ? " or " : ", ", prefix, words[i]);
+		used += k > 0 ? (size_t)k : 0;
+	}
+	return buf;
+}

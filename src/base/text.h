@@ -24,6 +24,11 @@ void text_printf(struct text_buf *t, const char *fmt, ...)
  * starting with '-' gets "./" before it, so that it is not an option. */
 void text_shell_word(struct text_buf *t, const char *s);
 
+/* words[0..n) for a message, each after prefix: "a, b or c" (".a, .b or
+ * .c"); as much as fits in buf (size > 0: always ended).  Returns buf. */
+const char *text_word_list(char *buf, size_t size, const char *prefix, const char *const *words,
+			   size_t n);
+
 /* The length (1 to 4) of the UTF-8 sequence s starts with, or 0 when its
  * first byte starts none (a NUL inside ends a sequence as any byte that
  * is no continuation does). */

@@ -13,6 +13,7 @@
 
 #include "base/alloc.h"
 #include "base/platform.h"
+#include "base/text.h"
 #include "whitted/image.h"
 
 int image_alloc(struct image *img, int width, int height, struct diag *d)
@@ -67,18 +68,12 @@ const char *image_format_name(enum image_format fmt)
 
 const char *image_format_names(char *buf, size_t size, const char *prefix)
 {
-	size_t used = 0;
+	const char *names[IMAGE_FORMATS];
 	int f;
 
-	if (size > 0)
-		buf[0] = '\0';
-	for (f = RT_FORMAT_UNKNOWN + 1; f < IMAGE_FORMATS && used < size; f++) {
-		int n = snprintf(buf + used, size - used, "%s%s%s",
-				 f == RT_FORMAT_UNKNOWN + 1 ? "" : f + 1 == IMAGE_FORMATS ? " or " : ", ",
-				 prefix, image_formats[f].name);
-		used += n > 0 ? (size_t)n : 0;
-	}
-	return buf;
+	for (f = RT_FORMAT_UNKNOWN + 1; f < IMAGE_FORMATS; f++)
+		names[f - 1] = image_formats[f].name;
+	return text_word_list(buf, size, prefix, names, IMAGE_FORMATS - 1);
 }
 
 enum image_format image_format_of_bytes(const unsigned char *data, size_t len)

@@ -8,6 +8,7 @@
 #include "accel/accel.h"
 #include "base/alloc.h"
 #include "base/simd.h"
+#include "base/text.h"
 #include "scene/scene_impl.h"
 #include "shapes/shapes.h"
 #include "whitted/camera.h"
@@ -276,17 +277,7 @@ int scene_dialect_from_name(const char *name)
 
 const char *scene_dialect_names(char *buf, size_t size)
 {
-	size_t used = 0;
-	int d;
-
-	if (size > 0)
-		buf[0] = '\0';
-	for (d = 0; d < RT_DIALECT_COUNT && used < size; d++) {
-		int n = snprintf(buf + used, size - used, "%s%s",
-				 d == 0 ? "" : d + 1 == RT_DIALECT_COUNT ? " or " : ", ", scene_dialects[d]);
-		used += n > 0 ? (size_t)n : 0;
-	}
-	return buf;
+	return text_word_list(buf, size, "", scene_dialects, RT_DIALECT_COUNT);
 }
 
 /* The figures of the ray tree's bound (scene_impl.h). */

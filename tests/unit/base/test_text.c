@@ -46,11 +46,28 @@ static void test_text_shell_word(void **state)
 	assert_false(t.full);
 }
 
+/* A message's list of words: one, two, three, with a prefix, and cut
+ * short by the buffer (always ended). */
+static void test_text_word_list(void **state)
+{
+	static const char *const w[] = { "png", "bmp", "ppm" };
+	char buf[64], small[6];
+
+	(void)state;
+	assert_string_equal(text_word_list(buf, sizeof(buf), "", w, 1), "png");
+	assert_string_equal(text_word_list(buf, sizeof(buf), "", w, 2), "png or bmp");
+	assert_string_equal(text_word_list(buf, sizeof(buf), "", w, 3), "png, bmp or ppm");
+	assert_string_equal(text_word_list(buf, sizeof(buf), ".", w, 3), ".png, .bmp or .ppm");
+	assert_string_equal(text_word_list(buf, sizeof(buf), "", w, 0), "");
+	assert_string_equal(text_word_list(small, sizeof(small), ".", w, 3), ".png,");
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_text_utf8_length),
 		cmocka_unit_test(test_text_shell_word),
+		cmocka_unit_test(test_text_word_list),
 	};
 
 	return SUPPORT_RUN(tests, argc, argv);
