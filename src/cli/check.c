@@ -90,6 +90,13 @@ int check_view_make(const struct check_reference *ref, const struct camera_param
 	return 0;
 }
 
+void check_view_move(struct check_view *to, struct check_view *from)
+{
+	*to = *from;
+	to->job.camera = &to->camera;
+	memset(from, 0, sizeof(*from));
+}
+
 void check_view_free(struct check_view *v)
 {
 	image_free(&v->image);

@@ -69,6 +69,9 @@ void check_reference_free(struct check_reference *ref);
 int check_view_make(const struct check_reference *ref, const struct camera_params *p, int width,
 		    int height, double angle, struct check_view *v, struct diag *d);
 void check_view_free(struct check_view *v);
+/* Moves view from into to (its job's camera is its own: a plain copy
+ * would point at from's); from is left empty. */
+void check_view_move(struct check_view *to, struct check_view *from);
 
 /* How far camera b shows what camera a shows at its pixels, in pixels
  * (the median of a grid of a's hits seen through b; check_geometry.c). */

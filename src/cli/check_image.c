@@ -335,7 +335,7 @@ static int check_refit(struct check_reference *ref, const struct check_view *giv
 		res->moved = false;
 		return 0;
 	}
-	res->found = view;
+	check_view_move(&res->found, &view);
 	res->n_ranks = 0;
 	return check_at(&res->found, res, &res->fig_found, true, d);
 }

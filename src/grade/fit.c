@@ -42,6 +42,15 @@ static const struct fit_stage fit_stages[] = {
 	{ 256, 1, 0.8, 6 },
 };
 
+/* The polish: once the passes have chosen, the winner refined on a level
+ * of the image's own pixels (up to 384 across), barely blurred.  The
+ * stages above stop at 256 cells: on a 512 or 768 image a camera right to
+ * half a cell still moves the floor's far edges by a pixel, and near the
+ * horizon, where the checker aliases, that is most of what differs.  Its
+ * score is not the fit's (the callers weigh the fit on the last stage's
+ * level, against the given camera's score there). */
+static const struct fit_stage fit_polish_stage = { 384, 1, 0.5, 3 };
+
 /* The hypotheses the first stages carry: the stage-0 refinements of the
  * best starting cameras, each refined on the next levels until the one
  * that fits best there is clear. */
@@ -242,6 +251,36 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 	return 0;
 }
 
+/* The camera in out refined on the polish level (fit_polish_stage); out's
+ * scores stay the last stage's. */
+static int fit_polish(const struct grade_job *job, const struct camera_params *start,
+		      const struct image *sub, const struct grade_variant *variant, struct grade_fit *out,
+		      struct diag *d)
+{
+	struct fit_level level;
+	struct fit_batch batch;
+	double x[FIT_DIM], pixel_deg, pivot = 100.0;
+	long evals = 0;
+	int rc;
+
+	fit_view_of(&out->camera, x);
+	if ((rc = fit_stage_level(&fit_polish_stage, sub, x[FIT_FOV], &level, &pixel_deg, d)) < 0)
+		return rc;
+	level.variant = variant;
+	if ((rc = fit_batch_open(&batch, &level, job, start, d)) < 0) {
+		fit_level_free(&level);
+		return rc;
+	}
+	(void)fit_gn(&batch, x, x[FIT_FOV] / level.h, &pivot, fit_polish_stage.iterations, &evals, d, &rc);
+	fit_batch_close(&batch);
+	fit_level_free(&level);
+	out->evals += evals;
+	if (rc < 0)
+		return rc;
+	fit_params_of(x, start, &out->camera);
+	return 0;
+}
+
 /* A second pass (and the refit with a cause) starts on this level:
  * blurred enough to leave the floor's alias a first pass settled on for
  * the true camera a few cells away, sharp enough to stay near. */
@@ -261,18 +300,20 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	 * guess; a second from where it ended, with one hypothesis, often
 	 * finds the camera that alias hid (the same last level: the scores
 	 * compare). */
-	if (rc < 0 || out->score <= FIT_SETTLED_SCORE)
+	if (rc < 0)
 		return rc;
-	if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
-		return rc;
-	if (again.evals > 0 && again.score < out->score) {
-		again.evals += out->evals;
-		again.start_score = out->start_score;
-		*out = again;
-	} else {
-		out->evals += again.evals;
+	if (out->score > FIT_SETTLED_SCORE) {
+		if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
+			return rc;
+		if (again.evals > 0 && again.score < out->score) {
+			again.evals += out->evals;
+			again.start_score = out->start_score;
+			*out = again;
+		} else {
+			out->evals += again.evals;
+		}
 	}
-	return 0;
+	return fit_polish(job, &starts[0], sub, NULL, out, d);
 }
 
 int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,
@@ -287,5 +328,7 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v) || v.corner ||
 	    v.wrap)
 		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
-	return fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
+	int rc = fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
+
+	return rc < 0 ? rc : fit_polish(job, start, sub, &v, out, d);
 }

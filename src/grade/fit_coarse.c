@@ -105,12 +105,15 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 
 /* The score of camera p (at eye e) by resampling the wide render: the
  * mean squared difference with the target; a cell whose direction falls
- * outside the wide render counts as 128 levels off. */
+ * outside the wide render counts as 128 levels off.  The sum only grows:
+ * once it reaches `limit` (the score a camera must beat to be kept), the
+ * rest is not summed and INFINITY returned, which changes no choice. */
 static double coarse_score(const struct coarse_work *w, const struct camera_params *p,
-			   const struct camera *wide, const float *img)
+			   const struct camera *wide, const float *img, double limit)
 {
 	const struct coarse_target *t = w->t;
 	const int n = COARSE_WIDE_PX;
+	const double cells = 3.0 * t->w * t->h;
 	struct camera cam;
 	struct diag d;
 	double e = 0.0;
@@ -119,6 +122,8 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 	if (camera_init_rect(&cam, p, t->full_w, t->full_h, &d) < 0)
 		return INFINITY;
 	for (k = 0; k < t->w * t->h; k++) {
+		if (k % t->w == 0 && e / cells >= limit)
+			return INFINITY;
 		double u = t->u[k] * cam.pixel_scale_x - cam.half_width;
 		double v = cam.half_height - t->v[k] * cam.pixel_scale;
 		struct vec3 dir = vec3_add(cam.forward, vec3_add(vec3_scale(cam.right, u),
@@ -151,7 +156,7 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 			e += (s - q[c]) * (s - q[c]);
 		}
 	}
-	return e / (3.0 * t->w * t->h);
+	return e / cells;
 }
 
 /* The camera at eye e turned from the start's direction by yaw (about
@@ -212,7 +217,7 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 				double s;
 				coarse_camera(&start, ce->eye, coarse_turns[a], coarse_turns[b], 0.0,
 					      coarse_fovs[f], w->start, &p);
-				s = coarse_score(w, &p, &wide, img);
+				s = coarse_score(w, &p, &wide, img, top_score[COARSE_REFINE - 1]);
 				for (k = 0; k < COARSE_REFINE; k++)
 					if (s < top_score[k]) {
 						memmove(top_score + k + 1, top_score + k,
@@ -225,6 +230,12 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 						break;
 					}
 			}
+	/* The finer steps start from the best of the grid (the steps' middle
+	 * is that camera, of that score): what cannot beat it stops early. */
+	if (top_score[0] < INFINITY) {
+		coarse_camera(&start, ce->eye, top[0][0], top[0][1], 0.0, top[0][2], w->start, &best);
+		ce->score = top_score[0];
+	}
 	for (k = 0; k < COARSE_REFINE && top_score[k] < INFINITY; k++)
 		for (a = 0; a < COARSE_LEN(coarse_fine_turns); a++)
 			for (b = 0; b < COARSE_LEN(coarse_fine_turns); b++)
@@ -235,7 +246,7 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 							      top[k][1] + coarse_fine_turns[b],
 							      coarse_fine_rolls[r],
 							      top[k][2] + coarse_fine_fovs[f], w->start, &p);
-						s = coarse_score(w, &p, &wide, img);
+						s = coarse_score(w, &p, &wide, img, ce->score);
 						if (s < ce->score) {
 							ce->score = s;
 							best = p;
