@@ -6,7 +6,7 @@
 # odd size, a count-driven scene file (--lenient), where it differs object
 # by object, the difference picture's legend; and grade over a Moodle
 # folder, a zip file, two scenes and a points table.
-# Usage: tests/cli/compare_real.sh [BUILD/whitted]
+# Usage: tests/cli/compare_real.sh [BUILD/whitted [BUILD/san/whitted]]
 SUITE=comparereal
 . "$(dirname "$0")/lib.sh"
 [ -n "${1:-}" ] && W=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
@@ -50,6 +50,24 @@ run compare -q --json "$SCENE" "$I/moved-noshadow.ppm"
 json moved-mistake 'assert j["camera"]["moved"] is True, j["camera"]
 assert j["first"] == ["no-shadows"], j["first"]
 assert j["best"]["causes"] == ["camera", "no-shadows"], j["best"]'
+
+# ... another mistake, another scene: the tiles swapped pull the plain fit a
+# cell away, and the refit with that cause finds the camera.  Run by the
+# sanitized whitted: the refit's view once kept a pointer into a dead
+# stack frame, which only this path reached.
+AK=$ROOT/tests/data/course-files/an-akhand.txt
+python3 "$REF" "$AK" "$I/moved-swapped.ppm" --size 64 --mistake floor-swapped --eye -41.6504,-117.0870,6.5255 \
+	--look -27.1880,-18.3681,-0.2137 --up 0.0026,0.0677,0.9977 --fov 69.937
+if [ -n "${2:-}" ]; then
+	WSAN=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
+	(cd "$T" && "$WSAN" compare -q --json "$AK" "$I/moved-swapped.ppm" >"$T/out" 2>"$T/err")
+	rc=$?
+	check moved-refit-sanitized eval '[ "$rc" -eq 3 ] && ! grep -q Sanitizer "$T/err"'
+	json moved-refit-named 'assert j["camera"]["moved"] is True, j["camera"]
+assert j["first"] == ["floor-swapped"], (j["first"], j["diagnosis"])'
+else
+	skip moved-refit-sanitized "no sanitized whitted given (make comparetest gives one)"
+fi
 
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
