@@ -251,6 +251,68 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 	return 0;
 }
 
+/* The dolly line: a camera moved along its view and zoomed to keep the
+ * scene's middle the same size sees much the same (only the near objects'
+ * parallax and the near floor differ), and the passes can settle tens of
+ * units too far back or forward, on one of the floor's aliases.  So after
+ * them, cameras along that line (steps as shares of the distance to the
+ * scene's middle), each refined on a blurred level, and the fit run on
+ * from the best when it beats the camera found there. */
+#define FIT_DOLLY_STAGE 3
+static const double fit_dolly_steps[] = { -0.3, -0.15, 0.15, 0.3 };
+#define FIT_DOLLY_STEPS (sizeof(fit_dolly_steps) / sizeof(fit_dolly_steps[0]))
+#define FIT_DOLLY_ITERATIONS 6
+
+/* The best camera on the dolly line about out's into *best: 1 when it
+ * beats out's on the level, 0 when none does. */
+static int fit_dolly_scan(const struct grade_job *job, const struct camera_params *start,
+			  const struct image *sub, struct grade_fit *out, struct camera_params *best,
+			  struct diag *d)
+{
+	struct fit_level level;
+	struct fit_batch batch;
+	double x[FIT_DIM], xs[FIT_DOLLY_STEPS][FIT_DIM], f0, fb = INFINITY, pixel_deg, pivot;
+	long evals = 0;
+	size_t k, pick = FIT_DOLLY_STEPS;
+	struct vec3 f;
+	int rc;
+
+	fit_view_of(&out->camera, x);
+	f = vec3_normalize(vec3_sub(out->camera.look, out->camera.eye));
+	pivot = vec3_dot(vec3_sub(fit_scene_centre(job->scene), out->camera.eye), f);
+	if (!(pivot > 1.0))
+		return 0;
+	if ((rc = fit_stage_level(&fit_stages[FIT_DOLLY_STAGE], sub, x[FIT_FOV], &level, &pixel_deg, d)) < 0)
+		return rc;
+	if ((rc = fit_batch_open(&batch, &level, job, start, d)) < 0) {
+		fit_level_free(&level);
+		return rc;
+	}
+	{
+		double p0 = 100.0;
+		f0 = fit_gn(&batch, x, x[FIT_FOV] / level.h, &p0, FIT_DOLLY_ITERATIONS, &evals, d, &rc);
+	}
+	for (k = 0; k < FIT_DOLLY_STEPS && rc == 0; k++) {
+		double q[FIT_DIM] = { 0 }, fk, pk = 100.0;
+		q[FIT_DOLLY] = fit_dolly_steps[k] * pivot;
+		fit_view_move(x, q, pivot, xs[k]);
+		fk = fit_gn(&batch, xs[k], xs[k][FIT_FOV] / level.h, &pk, FIT_DOLLY_ITERATIONS, &evals, d, &rc);
+		if (fk < f0 && fk < fb) {
+			fb = fk;
+			pick = k;
+		}
+	}
+	fit_batch_close(&batch);
+	fit_level_free(&level);
+	out->evals += evals;
+	if (rc < 0)
+		return rc;
+	if (pick == FIT_DOLLY_STEPS)
+		return 0;
+	fit_params_of(xs[pick], start, best);
+	return 1;
+}
+
 /* The camera in out refined on the polish level (fit_polish_stage); out's
  * scores stay the last stage's. */
 static int fit_polish(const struct grade_job *job, const struct camera_params *start,
@@ -311,6 +373,22 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			*out = again;
 		} else {
 			out->evals += again.evals;
+		}
+	}
+	if (out->score > FIT_SETTLED_SCORE) {
+		struct camera_params moved;
+		if ((rc = fit_dolly_scan(job, &starts[0], sub, out, &moved, d)) < 0)
+			return rc;
+		if (rc > 0) {
+			if ((rc = fit_run(job, &moved, 1, sub, NULL, FIT_DOLLY_STAGE + 1, &again, d)) < 0)
+				return rc;
+			if (again.score < out->score) {
+				again.evals += out->evals;
+				again.start_score = out->start_score;
+				*out = again;
+			} else {
+				out->evals += again.evals;
+			}
 		}
 	}
 	return fit_polish(job, &starts[0], sub, NULL, out, d);
