@@ -105,9 +105,9 @@ LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o) $(call KERNEL_OBJ,$(BUILD))
 SAN_OBJ := $(LIB_SRC:%.c=$(BUILD)/san/%.o) $(call KERNEL_OBJ,$(BUILD)/san)
 
 # ---- the programs ---------------------------------------------------------
-# src/cli/tool.c and scene_opts.c are shared by the three programs: the
+# src/cli/tool.c, scene_opts.c and the rest of TOOLS_SRC are shared by the three programs: the
 # option parsing and the printing that the library never does.
-TOOLS_SRC := src/cli/tool.c src/cli/scene_opts.c src/cli/scene_jobs.c src/cli/plugin_opts.c src/cli/suggest.c
+TOOLS_SRC := src/cli/tool.c src/cli/scene_opts.c src/cli/scene_operands.c src/cli/scene_jobs.c src/cli/plugin_opts.c src/cli/suggest.c
 WHITTED_SRC := $(filter-out $(TOOLS_SRC),$(wildcard src/cli/*.c))
 POV_SRC := $(wildcard pov_export/*.c)
 VIEWER_SRC := $(wildcard viewer/*.c)

@@ -51,19 +51,14 @@ uint32_t accel_occluded_packet(const struct accel *a, const struct ray *r, int n
 	return a->rays->rays4.occluded_packet(a, r, n, t_min, t_max);
 }
 
-uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
-			      const double *t_min, const double *t_max)
+/* The active lanes of p as rays, with their ranges and lane numbers (the
+ * other wide trees' packets take the rays one by one); their count. */
+static int lanes_gather(const struct ray_packet *p, uint32_t active, const double *t_min,
+			const double *t_max, struct ray *r, double *t0, double *t1, int *bit)
 {
-	struct ray r[ACCEL_PACKET];
-	double t0[ACCEL_PACKET], t1[ACCEL_PACKET];
-	int bit[ACCEL_PACKET], n = 0, i;
-	uint32_t m, packed, blocked = 0;
+	uint32_t m;
+	int n = 0;
 
-	if (a->walk->wide.occluded_lanes)
-		return a->walk->wide.occluded_lanes(a, p, active, t_min, t_max);
-	if (!a->walk->wide.occluded_packet)
-		return a->rays->rays4.occluded_lanes(a, p, active, t_min, t_max);
-	/* The other wide trees' packets take the rays one by one. */
 	for (m = active; m; m &= m - 1) {
 		bit[n] = __builtin_ctz(m);
 		r[n] = ray_packet_get(p, bit[n]);
@@ -71,6 +66,22 @@ uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p,
 		t1[n] = t_max[bit[n]];
 		n++;
 	}
+	return n;
+}
+
+uint32_t accel_occluded_lanes(const struct accel *a, const struct ray_packet *p, uint32_t active,
+			      const double *t_min, const double *t_max)
+{
+	struct ray r[ACCEL_PACKET];
+	double t0[ACCEL_PACKET], t1[ACCEL_PACKET];
+	int bit[ACCEL_PACKET], n, i;
+	uint32_t packed, blocked = 0;
+
+	if (a->walk->wide.occluded_lanes)
+		return a->walk->wide.occluded_lanes(a, p, active, t_min, t_max);
+	if (!a->walk->wide.occluded_packet)
+		return a->rays->rays4.occluded_lanes(a, p, active, t_min, t_max);
+	n = lanes_gather(p, active, t_min, t_max, r, t0, t1, bit);
 	if (n == 0)
 		return 0;
 	packed = accel_occluded_packet(a, r, n, t0, t1);
@@ -85,8 +96,7 @@ void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, ui
 	struct ray r[ACCEL_PACKET];
 	double t0[ACCEL_PACKET], t1[ACCEL_PACKET];
 	const struct shape *h[ACCEL_PACKET];
-	int bit[ACCEL_PACKET], n = 0, i;
-	uint32_t m;
+	int bit[ACCEL_PACKET], n, i;
 
 	if (a->walk->wide.intersect_lanes) {
 		a->walk->wide.intersect_lanes(a, p, active, t_min, t_max, hit);
@@ -96,14 +106,7 @@ void accel_intersect_lanes(const struct accel *a, const struct ray_packet *p, ui
 		a->rays->rays4.intersect_lanes(a, p, active, t_min, t_max, hit);
 		return;
 	}
-	/* The other wide trees' packets take the rays one by one. */
-	for (m = active; m; m &= m - 1) {
-		bit[n] = __builtin_ctz(m);
-		r[n] = ray_packet_get(p, bit[n]);
-		t0[n] = t_min[bit[n]];
-		t1[n] = t_max[bit[n]];
-		n++;
-	}
+	n = lanes_gather(p, active, t_min, t_max, r, t0, t1, bit);
 	if (n == 0)
 		return;
 	accel_intersect_packet(a, r, n, t0, t1, h);

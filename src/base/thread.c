@@ -25,6 +25,22 @@ int rt_thread_start(pthread_t *t, void *(*fn)(void *), void *arg)
 	return rc;
 }
 
+void rt_run_shared(int n, void *(*fn)(void *), void *arg)
+{
+	pthread_t tid[RT_PARTS_MAX];
+	int k, started = 0;
+
+	n = n > RT_PARTS_MAX ? RT_PARTS_MAX : n;
+	for (k = 1; k < n; k++) {
+		if (rt_thread_start(&tid[k], fn, arg) != 0)
+			break;
+		started++;
+	}
+	fn(arg);
+	for (k = 1; k <= started; k++)
+		pthread_join(tid[k], NULL);
+}
+
 void rt_run_parts(void *parts, size_t size, int n, void *(*fn)(void *))
 {
 	pthread_t tid[RT_PARTS_MAX];

@@ -16,6 +16,12 @@
  * error pthread_create returned. */
 int rt_thread_start(pthread_t *t, void *(*fn)(void *), void *arg);
 
+/* fn(arg) on n threads at once, the calling thread one of them (at most
+ * RT_PARTS_MAX; fewer when a thread cannot be started): workers that
+ * share arg and take their work from it.  The others get RT_THREAD_STACK.
+ * Returns when all have returned. */
+void rt_run_shared(int n, void *(*fn)(void *), void *arg);
+
 /* The parts a job is cut into that rt_run_parts starts threads for; more
  * run on the calling thread. */
 #define RT_PARTS_MAX 64

@@ -223,16 +223,9 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		if (first == argc)
 			return tool_usage_error("no IMAGE given");
 	} else {
-		if (!o->scene.test_scene) {
-			if (first == argc)
-				return tool_usage_error("no SCENE given");
-			o->scene.path = argv[first++];
-		}
-		if (first == argc)
-			return tool_usage_error("no IMAGE given");
-		if (first + 1 != argc)
-			return tool_usage_error("one IMAGE expected, found also '%s' (whitted grade takes many)",
-						argv[first + 1]);
+		if (cli_scene_and_operand(&o->scene, argc, argv, &first, "IMAGE", " (whitted grade takes many)",
+					  &d) < 0)
+			return tool_usage_error("%s", d.msg);
 		if (o->scene.path && check_looks_like_image(o->scene.path) &&
 		    !check_looks_like_image(argv[first]))
 			return tool_usage_error("'%s' is an image and '%s' is not: SCENE comes first "

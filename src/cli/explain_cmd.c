@@ -100,15 +100,8 @@ static int explain_args(int argc, char **argv, struct explain_options *o)
 			return tool_unknown_option(argv[optind - 1], longopts);
 	}
 	first = optind;
-	if (!o->scene.test_scene) {
-		if (first == argc)
-			return tool_usage_error("no SCENE given");
-		o->scene.path = argv[first++];
-	}
-	if (first == argc)
-		return tool_usage_error("no pixel X,Y given");
-	if (first + 1 != argc)
-		return tool_usage_error("one pixel X,Y expected, found also '%s'", argv[first + 1]);
+	if (cli_scene_and_operand(&o->scene, argc, argv, &first, "pixel X,Y", "", &d) < 0)
+		return tool_usage_error("%s", d.msg);
 	return explain_pixel_arg(argv[first], o);
 }
 

@@ -51,6 +51,16 @@ const char *grade_verdict_name(enum check_verdict v);
  * "unreadable". */
 const char *grade_outcome(const struct grade_row *r, char *buf, size_t size);
 
+/* How many rows of each outcome, in the order first met (the first
+ * GRADE_OUTCOMES outcomes; rows of any later one are not counted). */
+#define GRADE_OUTCOMES 64
+struct grade_outcome_tally {
+	char names[GRADE_OUTCOMES][160];
+	size_t counts[GRADE_OUTCOMES];
+	size_t n;
+};
+void grade_outcome_tally(const struct grade_class *c, struct grade_outcome_tally *t);
+
 /* The CSV file of the rows. */
 int grade_write_csv(const struct grade_class *c, const char *path, struct diag *d);
 /* The HTML report (grade_html.c). */

@@ -169,32 +169,24 @@ static void grade_print_row(const struct grade_row *r)
 	fflush(stdout);
 }
 
-/* How many rows of each outcome, in the order first met. */
+/* The class's summary: images and students, each verdict, each outcome. */
 static void grade_print_summary(const struct grade_class *c)
 {
-	char names[64][160], buf[160];
-	size_t counts[64], n = 0, k, j, students = 0;
+	struct grade_outcome_tally t;
+	size_t k, j, students = 0;
 	size_t verdicts[3] = { 0, 0, 0 };
 
 	for (k = 0; k < c->n_rows; k++) {
-		const char *o = grade_outcome(&c->rows[k], buf, sizeof(buf));
 		verdicts[c->rows[k].res.verdict]++;
 		if (k == 0 || strcmp(c->rows[k].in->student, c->rows[k - 1].in->student) != 0)
 			students++;
-		for (j = 0; j < n && strcmp(names[j], o) != 0; j++)
-			;
-		if (j == n && n < 64) {
-			snprintf(names[n], sizeof(names[n]), "%s", o);
-			counts[n++] = 0;
-		}
-		if (j < n)
-			counts[j]++;
 	}
+	grade_outcome_tally(c, &t);
 	printf("class: %zu image%s of %zu student%s: %zu match, %zu differ, %zu unreadable; by outcome:",
 	       c->n_rows, c->n_rows == 1 ? "" : "s", students, students == 1 ? "" : "s",
 	       verdicts[CHECK_MATCH], verdicts[CHECK_DIFFERS], verdicts[CHECK_UNREADABLE]);
-	for (j = 0; j < n; j++)
-		printf("%s %s %zu", j ? "," : "", names[j], counts[j]);
+	for (j = 0; j < t.n; j++)
+		printf("%s %s %zu", j ? "," : "", t.names[j], t.counts[j]);
 	printf("\n");
 }
 

@@ -202,25 +202,15 @@ static int html_submission(FILE *f, const struct grade_class *c, size_t i)
 /* The class: how many images of each outcome. */
 static void html_outcomes(FILE *f, const struct grade_class *c)
 {
-	char names[64][160], buf[160];
-	size_t counts[64], n = 0, k, j;
+	struct grade_outcome_tally t;
+	size_t j;
 
-	for (k = 0; k < c->n_rows; k++) {
-		const char *o = grade_outcome(&c->rows[k], buf, sizeof(buf));
-		for (j = 0; j < n && strcmp(names[j], o) != 0; j++)
-			;
-		if (j == n && n < 64) {
-			snprintf(names[n], sizeof(names[n]), "%s", o);
-			counts[n++] = 0;
-		}
-		if (j < n)
-			counts[j]++;
-	}
+	grade_outcome_tally(c, &t);
 	fputs("<table id=\"outcomes\"><thead><tr><th>outcome</th><th>images</th></tr></thead><tbody>\n", f);
-	for (j = 0; j < n; j++) {
+	for (j = 0; j < t.n; j++) {
 		fputs("<tr><td>", f);
-		html_text(f, names[j]);
-		fprintf(f, "</td><td>%zu</td></tr>\n", counts[j]);
+		html_text(f, t.names[j]);
+		fprintf(f, "</td><td>%zu</td></tr>\n", t.counts[j]);
 	}
 	fputs("</tbody></table>\n", f);
 }

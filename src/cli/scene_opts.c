@@ -397,27 +397,6 @@ out_destroy:
 	return rc;
 }
 
-int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int first,
-		      const char **path, struct diag *d)
-{
-	*path = NULL;
-	if (o->list_shapes && first == argc)
-		return 0;
-	if (o->test_scene) {
-		if (first != argc)
-			return diag_fail(d, RT_E_INVALID,
-					"--test-scene takes no SCENE, found '%s'", argv[first]);
-		return 0;
-	}
-	if (first == argc)
-		return diag_fail(d, RT_E_INVALID, "no SCENE given");
-	if (first + 1 != argc)
-		return diag_fail(d, RT_E_INVALID, "one SCENE expected, found also '%s'",
-				argv[first + 1]);
-	*path = argv[first];
-	return 0;
-}
-
 char *cli_default_output(const char *scene_path, const char *suffix)
 {
 	const char *base, *dot;

@@ -31,26 +31,10 @@
 struct tile_png {
 	png_structp png;
 	png_infop info;
-	char msg[200];
+	struct png_message msg;
 };
 
 typedef void tile_png_step(struct tile_png *p, void *ctx);
-
-/* libpng's error callback: keeps the message and returns to the guard. */
-static void tile_png_error(png_structp png, png_const_charp msg)
-{
-	struct tile_png *p = png_get_error_ptr(png);
-
-	snprintf(p->msg, sizeof(p->msg), "%s", msg);
-	png_longjmp(png, 1);
-}
-
-/* Warnings (an unusual but readable chunk) change nothing here. */
-static void tile_png_warning(png_structp png, png_const_charp msg)
-{
-	(void)png;
-	(void)msg;
-}
 
 /* Runs step(p, ctx); false when libpng failed in it (p->msg says why). */
 static bool tile_png_guard(struct tile_png *p, tile_png_step *step, void *ctx)
@@ -228,16 +212,16 @@ static int tile_png_failed(const char *path, const struct tile_png *p, const str
 
 	if (r->truncated)
 		return diag_set(d, RT_E_SYNTAX, path, 0, 0, "truncated PNG file");
-	if (strstr(p->msg, "CRC error")) {
+	if (strstr(p->msg.text, "CRC error")) {
 		c = png_get_io_chunk_type(p->png);
 		return diag_set(d, RT_E_SYNTAX, path, 0, 0,
 				"damaged PNG file (bad CRC in its %c%c%c%c chunk)",
 				(char)(c >> 24 & 0xff), (char)(c >> 16 & 0xff), (char)(c >> 8 & 0xff),
 				(char)(c & 0xff));
 	}
-	if (strstr(p->msg, "memory"))
-		return diag_set(d, RT_E_NOMEM, path, 0, 0, "cannot read PNG: %s", p->msg);
-	return diag_set(d, RT_E_SYNTAX, path, 0, 0, "damaged PNG file (%s)", p->msg);
+	if (strstr(p->msg.text, "memory"))
+		return diag_set(d, RT_E_NOMEM, path, 0, 0, "cannot read PNG: %s", p->msg.text);
+	return diag_set(d, RT_E_SYNTAX, path, 0, 0, "damaged PNG file (%s)", p->msg.text);
 }
 
 /* The record against the PNG's own header and placing chunks. */
@@ -297,7 +281,7 @@ int tile_read_memory(const unsigned char *b, size_t n, const char *path, struct 
 	r.data = b;
 	r.len = n;
 	memset(&p, 0, sizeof(p));
-	p.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &p, tile_png_error, tile_png_warning);
+	p.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &p.msg, png_message_error, png_message_warning);
 	if (p.png)
 		p.info = png_create_info_struct(p.png);
 	if (!p.info) {

@@ -3,7 +3,6 @@
  * own scratch, so that a batch's scores do not depend on the number of
  * threads. */
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
 
 #include "base/thread.h"
@@ -31,8 +30,7 @@ static void *fit_batch_worker(void *arg)
 void fit_batch_run(void *ctx, const double *xs, double *fs, int n)
 {
 	struct fit_batch *b = ctx;
-	pthread_t threads[FIT_MAX_THREADS];
-	int nt = b->job->threads < 1 ? 1 : b->job->threads, started = 0, i;
+	int nt = b->job->threads < 1 ? 1 : b->job->threads, i;
 
 	nt = nt > n ? n : nt;
 	nt = nt > FIT_MAX_THREADS ? FIT_MAX_THREADS : nt;
@@ -43,14 +41,7 @@ void fit_batch_run(void *ctx, const double *xs, double *fs, int n)
 	b->next_thread = 0;
 	for (i = 0; i < n; i++)
 		fs[i] = INFINITY;
-	for (i = 1; i < nt; i++) {
-		if (rt_thread_start(&threads[i], fit_batch_worker, b) != 0)
-			break;
-		started++;
-	}
-	fit_batch_worker(b);
-	for (i = 1; i <= started; i++)
-		pthread_join(threads[i], NULL);
+	rt_run_shared(nt, fit_batch_worker, b);
 }
 
 int fit_batch_open(struct fit_batch *b, const struct fit_level *l, const struct grade_job *job,

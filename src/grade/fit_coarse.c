@@ -6,7 +6,6 @@
  * submission, and the best few cameras go on to the fine search. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -323,21 +322,12 @@ static void coarse_target_free(struct coarse_target *t)
 /* Scores eyes [first, n) of w on the job's threads. */
 static void coarse_run(struct coarse_work *w, int first, int n)
 {
-	pthread_t threads[COARSE_MAX_THREADS];
 	int nt = w->job->threads < 1 ? 1 : w->job->threads > COARSE_MAX_THREADS ? COARSE_MAX_THREADS
 										 : w->job->threads;
-	int i, started = 0;
 
 	w->next = first;
 	w->n_eyes = n;
-	for (i = 1; i < nt; i++) {
-		if (rt_thread_start(&threads[i], coarse_worker, w) != 0)
-			break;
-		started++;
-	}
-	coarse_worker(w);
-	for (i = 1; i <= started; i++)
-		pthread_join(threads[i], NULL);
+	rt_run_shared(nt, coarse_worker, w);
 }
 
 static int coarse_eye_cmp(const void *a, const void *b)

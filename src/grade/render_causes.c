@@ -1,7 +1,6 @@
 /* The renders of the causes: threads share chunks of pixels of every
  * render (a cause in one of its forms), and the reference render. */
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
 
 #include "base/thread.h"
@@ -177,9 +176,8 @@ int grade_render_variants(const struct grade_job *job, const struct grade_varian
 			  struct image *imgs, struct image *timgs, size_t n,
 			  const uint32_t *pixels, size_t n_pixels, struct diag *d)
 {
-	pthread_t threads[GRADE_MAX_THREADS];
 	struct grade_work w;
-	int nthreads = job->threads, started = 0, i;
+	int nthreads = job->threads;
 
 	memset(&w, 0, sizeof(w));
 	w.job = job;
@@ -193,14 +191,7 @@ int grade_render_variants(const struct grade_job *job, const struct grade_varian
 	if (w.total == 0)
 		return 0;
 	nthreads = nthreads < 1 ? 1 : nthreads > GRADE_MAX_THREADS ? GRADE_MAX_THREADS : nthreads;
-	for (i = 1; i < nthreads; i++) {
-		if (rt_thread_start(&threads[i], grade_worker, &w) != 0)
-			break;
-		started++;
-	}
-	grade_worker(&w);
-	for (i = 1; i <= started; i++)
-		pthread_join(threads[i], NULL);
+	rt_run_shared(nthreads, grade_worker, &w);
 	if (job->cancel && *job->cancel)
 		return diag_fail(d, RT_E_INTERRUPTED, "interrupted");
 	return 0;

@@ -51,6 +51,16 @@ const unsigned char *png_idat_piece(const struct png_idat_strips *st, int k, siz
 size_t png_idat_stream_len(const struct png_idat_strips *st);
 const struct image *png_idat_strips_image(const struct png_idat_strips *st);
 
+/* libpng's last error, for the message: a reader's or writer's error
+ * pointer is its png_message, and png_message_error (its error callback)
+ * keeps the text and returns to the guard (png_longjmp); warnings (an
+ * unusual but readable chunk) change nothing (png_message_warning). */
+struct png_message {
+	char text[200];
+};
+void png_message_error(png_structp png, png_const_charp msg);
+void png_message_warning(png_structp png, png_const_charp msg);
+
 /* Called after png_set_IHDR and before png_write_info, to add chunks;
  * it runs inside the writer's error guard and may call libpng freely. */
 typedef void png_idat_extra_fn(png_structp png, png_infop info, void *ctx);

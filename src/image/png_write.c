@@ -21,18 +21,18 @@ struct png_idat_writer {
 	FILE *f;
 	png_idat_extra_fn *extra;
 	void *ctx;
-	char msg[200];
+	struct png_message msg;
 };
 
-static void png_idat_error(png_structp png, png_const_charp msg)
+void png_message_error(png_structp png, png_const_charp msg)
 {
-	struct png_idat_writer *w = png_get_error_ptr(png);
+	struct png_message *m = png_get_error_ptr(png);
 
-	snprintf(w->msg, sizeof(w->msg), "%s", msg);
+	snprintf(m->text, sizeof(m->text), "%s", msg);
 	png_longjmp(png, 1);
 }
 
-static void png_idat_warning(png_structp png, png_const_charp msg)
+void png_message_warning(png_structp png, png_const_charp msg)
 {
 	(void)png;
 	(void)msg;
@@ -113,7 +113,7 @@ int png_idat_strips_write(struct png_idat_strips *st, FILE *f, png_idat_extra_fn
 	w.f = f;
 	w.extra = extra;
 	w.ctx = ctx;
-	w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w, png_idat_error, png_idat_warning);
+	w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.msg, png_message_error, png_message_warning);
 	if (w.png)
 		w.info = png_create_info_struct(w.png);
 	if (!w.info) {
@@ -130,7 +130,7 @@ int png_idat_strips_write(struct png_idat_strips *st, FILE *f, png_idat_extra_fn
 	 * (a full disk, a file-size limit) is in errno. */
 	if (ferror(f) && errno != 0)
 		return diag_fail(d, RT_E_IO, "cannot write PNG: %s", strerror(errno));
-	return diag_fail(d, RT_E_IO, "cannot write PNG: %s", ok ? "write error" : w.msg);
+	return diag_fail(d, RT_E_IO, "cannot write PNG: %s", ok ? "write error" : w.msg.text);
 }
 
 int png_idat_write_file(const struct image *img, FILE *f, png_idat_extra_fn *extra, void *ctx,
