@@ -69,10 +69,7 @@ static int pov_option(void *ctx, int c, const char *arg)
 
 	switch (c) {
 	case 'o':
-		if (arg[0] == '\0')
-			return tool_usage_error("--output: expected a file name, found ''");
-		o->output = arg;
-		return 0;
+		return tool_file_arg("--output", arg, &o->output);
 	case CLI_OPT_CLAMP:
 		/* POV-Ray clamps only the finished pixel; whitted's default
 		 * clamp at every level has no POV-Ray equivalent. */

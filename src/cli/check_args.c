@@ -109,17 +109,11 @@ static int check_option(struct check_options *o, int c, const char *arg)
 	case 'o':
 		if (!o->grade)
 			break;
-		if (arg[0] == '\0')
-			return tool_usage_error("--output: expected a file name, found ''");
-		o->report_path = arg;
-		return 0;
+		return tool_file_arg("--output", arg, &o->report_path);
 	case OPT_CSV:
 		if (!o->grade)
 			break;
-		if (arg[0] == '\0')
-			return tool_usage_error("--csv: expected a file name, found ''");
-		o->csv_path = arg;
-		return 0;
+		return tool_file_arg("--csv", arg, &o->csv_path);
 	case OPT_SCENE:
 		if (!o->grade)
 			break;
@@ -134,10 +128,7 @@ static int check_option(struct check_options *o, int c, const char *arg)
 	case OPT_MARKS:
 		if (!o->grade)
 			break;
-		if (arg[0] == '\0')
-			return tool_usage_error("--marks: expected a file name, found ''");
-		o->marks_path = arg;
-		return 0;
+		return tool_file_arg("--marks", arg, &o->marks_path);
 	}
 	return -1;
 }

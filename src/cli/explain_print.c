@@ -48,6 +48,30 @@ static void json_color(FILE *out, struct color c)
 	json_vec(out, vec3_make(c.r, c.g, c.b));
 }
 
+/* ", \"key\": " and the value: a field after the first of an object. */
+static void json_key(FILE *out, const char *key)
+{
+	fprintf(out, ", \"%s\": ", key);
+}
+
+static void json_key_num(FILE *out, const char *key, double v)
+{
+	json_key(out, key);
+	json_num(out, v);
+}
+
+static void json_key_vec(FILE *out, const char *key, struct vec3 v)
+{
+	json_key(out, key);
+	json_vec(out, v);
+}
+
+static void json_key_color(FILE *out, const char *key, struct color c)
+{
+	json_key(out, key);
+	json_color(out, c);
+}
+
 static void json_object(FILE *out, const struct explain_object *o)
 {
 	fputs("{\"index\": ", out);
@@ -55,9 +79,9 @@ static void json_object(FILE *out, const struct explain_object *o)
 		fputs("null", out);
 	else
 		fprintf(out, "%ld", o->index);
-	fputs(", \"keyword\": ", out);
+	json_key(out, "keyword");
 	json_text(out, o->keyword);
-	fputs(", \"line\": ", out);
+	json_key(out, "line");
 	if (o->line > 0)
 		fprintf(out, "%d", o->line);
 	else
@@ -71,30 +95,22 @@ static void json_light(FILE *out, const struct scene *s, size_t index, const str
 
 	fprintf(out, "{\"index\": %zu, \"position\": ", index + 1);
 	json_vec(out, lt->pos);
-	fputs(", \"color\": ", out);
-	json_color(out, lt->color);
+	json_key_color(out, "color", lt->color);
 	fprintf(out, ", \"spot\": %s, \"state\": \"%s\", \"distance\": ", lt->spot ? "true" : "false",
 		explain_light_state_name(l->state));
 	json_num(out, l->distance);
-	fputs(", \"l\": ", out);
-	json_vec(out, l->l);
-	fputs(", \"n_dot_l\": ", out);
-	json_num(out, l->n_dot_l);
-	fputs(", \"r_dot_l\": ", out);
-	json_num(out, l->r_dot_l);
-	fputs(", \"attenuation\": ", out);
-	json_num(out, l->attenuation);
-	fputs(", \"blocker\": ", out);
+	json_key_vec(out, "l", l->l);
+	json_key_num(out, "n_dot_l", l->n_dot_l);
+	json_key_num(out, "r_dot_l", l->r_dot_l);
+	json_key_num(out, "attenuation", l->attenuation);
+	json_key(out, "blocker");
 	if (l->state == EXPLAIN_SHADOWED && l->blocker_known)
 		json_object(out, &l->blocker);
 	else
 		fputs("null", out);
-	fputs(", \"diffuse\": ", out);
-	json_color(out, l->diffuse);
-	fputs(", \"specular\": ", out);
-	json_color(out, l->specular);
-	fputs(", \"term\": ", out);
-	json_color(out, l->term);
+	json_key_color(out, "diffuse", l->diffuse);
+	json_key_color(out, "specular", l->specular);
+	json_key_color(out, "term", l->term);
 	fputc('}', out);
 }
 
@@ -107,8 +123,7 @@ static void json_child(FILE *out, const char *name, long id, double k, struct co
 	}
 	fprintf(out, "{\"ray\": %ld, \"k\": ", id);
 	json_num(out, k);
-	fputs(", \"color\": ", out);
-	json_color(out, seen);
+	json_key_color(out, "color", seen);
 	fputc('}', out);
 }
 
@@ -126,41 +141,29 @@ static void json_ray(FILE *out, const struct scene *s, const struct explanation 
 		fputs("null", out);
 	fprintf(out, ", \"level\": %d, \"weight\": ", r->level);
 	json_num(out, r->weight);
-	fputs(", \"origin\": ", out);
-	json_vec(out, r->ray.origin);
-	fputs(", \"direction\": ", out);
-	json_vec(out, r->ray.dir);
-	fputs(", \"hit\": ", out);
+	json_key_vec(out, "origin", r->ray.origin);
+	json_key_vec(out, "direction", r->ray.dir);
+	json_key(out, "hit");
 	if (!r->hit) {
 		fputs("null, \"color\": [0, 0, 0]}", out);
 		return;
 	}
 	fputs("{\"object\": ", out);
 	json_object(out, &r->object);
-	fputs(", \"t\": ", out);
-	json_num(out, r->t);
-	fputs(", \"point\": ", out);
-	json_vec(out, r->point);
-	fputs(", \"normal\": ", out);
-	json_vec(out, r->normal);
+	json_key_num(out, "t", r->t);
+	json_key_vec(out, "point", r->point);
+	json_key_vec(out, "normal", r->normal);
 	fprintf(out, ", \"normal_turned\": %s, \"surface\": ", r->turned ? "true" : "false");
 	json_color(out, r->surface);
-	fputs(", \"highlight\": ", out);
-	json_color(out, r->highlight);
+	json_key_color(out, "highlight", r->highlight);
 	fputs(", \"material\": {\"ka\": ", out);
 	json_num(out, r->mat.ka);
-	fputs(", \"kd\": ", out);
-	json_num(out, r->mat.kd);
-	fputs(", \"ks\": ", out);
-	json_num(out, r->mat.ks);
-	fputs(", \"kr\": ", out);
-	json_num(out, r->mat.kr);
-	fputs(", \"shininess\": ", out);
-	json_num(out, r->mat.shininess);
-	fputs(", \"kt\": ", out);
-	json_num(out, r->mat.kt);
-	fputs(", \"ior\": ", out);
-	json_num(out, r->mat.ior);
+	json_key_num(out, "kd", r->mat.kd);
+	json_key_num(out, "ks", r->mat.ks);
+	json_key_num(out, "kr", r->mat.kr);
+	json_key_num(out, "shininess", r->mat.shininess);
+	json_key_num(out, "kt", r->mat.kt);
+	json_key_num(out, "ior", r->mat.ior);
 	fputs("}, \"ambient\": ", out);
 	json_color(out, r->ambient);
 	fputs(", \"lights\": [", out);
@@ -203,8 +206,7 @@ void explain_print_json(FILE *out, const char *scene_name, const struct scene *s
 	}
 	fputs("], \"color\": ", out);
 	json_color(out, e->color);
-	fputs(", \"clamped\": ", out);
-	json_color(out, e->clamped);
+	json_key_color(out, "clamped", e->clamped);
 	fprintf(out, ", \"value\": [%d, %d, %d]}\n", e->value[0], e->value[1], e->value[2]);
 }
 

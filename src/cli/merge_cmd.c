@@ -108,9 +108,8 @@ int merge_main(int argc, char **argv)
 	while ((c = getopt_long(argc, argv, ":o:h", longopts, NULL)) != -1) {
 		switch (c) {
 		case 'o':
-			if (optarg[0] == '\0')
-				return tool_usage_error("--output: %s", "expected a file name, found ''");
-			output = optarg;
+			if (tool_file_arg("--output", optarg, &output) != 0)
+				return 2;
 			break;
 		case OPT_FORMAT:
 			format = image_format_from_name(optarg);

@@ -233,10 +233,7 @@ static int render_option(void *ctx, int c, const char *arg)
 	diag_clear(&d);
 	switch (c) {
 	case 'o':
-		if (arg[0] == '\0')
-			return tool_usage_error("--output: expected a file name, found ''");
-		o->output = arg;
-		return 0;
+		return tool_file_arg("--output", arg, &o->output);
 	case OPT_FORMAT:
 		o->format = image_format_from_name(arg);
 		if (o->format == RT_FORMAT_UNKNOWN) {
@@ -270,10 +267,7 @@ static int render_option(void *ctx, int c, const char *arg)
 	case OPT_FRAME:
 		return int_option("--frame", arg, 1, RT_MAX_FRAMES, &o->frame);
 	case OPT_PATH:
-		if (arg[0] == '\0')
-			return tool_usage_error("--path: expected a file name, found ''");
-		o->path_file = arg;
-		return 0;
+		return tool_file_arg("--path", arg, &o->path_file);
 	case OPT_GRID:
 		return parse_grid(arg, o, &d) < 0 ? tool_usage_error("--grid: %s", d.msg) : 0;
 	case OPT_TILE:

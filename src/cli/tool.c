@@ -34,6 +34,14 @@ int tool_usage_error(const char *fmt, ...)
 	return TOOL_EXIT_USAGE;
 }
 
+int tool_file_arg(const char *option, const char *arg, const char **out)
+{
+	if (arg[0] == '\0')
+		return tool_usage_error("%s: expected a file name, found ''", option);
+	*out = arg;
+	return 0;
+}
+
 int tool_unknown_option(const char *arg, const struct option *longopts)
 {
 	const char *names[128], *hit = NULL;

@@ -30,6 +30,10 @@ int tool_usage_error(const char *fmt, ...)
  * by a NULL name) is near (cli/suggest.h).  Returns TOOL_EXIT_USAGE. */
 struct option;
 int tool_unknown_option(const char *arg, const struct option *longopts);
+
+/* A file name option's value into *out: 0, or a usage error (2) for an
+ * empty one ("--output: expected a file name, found ''"). */
+int tool_file_arg(const char *option, const char *arg, const char **out);
 /* One diagnostic as "FILE:LINE:COL: KIND: MSG" (see diag_format). */
 void tool_print_diag(const struct diag *d, const char *kind);
 /* A diag_note_fn: prints the note unless *(const bool *)quiet is true. */
