@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "support.h"
+#include "syntax/parser_impl.h"
 
 void support_assert_near(double a, double b, double eps, const char *expr,
 			 const char *file, int line)
@@ -171,4 +172,19 @@ struct vec3 support_random_direction(void)
 		if (len > 0.1 && len <= 1.0)
 			return vec3_scale(v, 1.0 / len);
 	}
+}
+
+int support_parse_object(const struct shape_ops *ops, const char *text, struct shape **out,
+			 struct diag *d)
+{
+	struct parser p;
+
+	memset(&p, 0, sizeof(p));
+	diag_clear(d);
+	lexer_init(&p.lx, text, strlen(text));
+	p.name = "test.txt";
+	p.text = text;
+	p.len = strlen(text);
+	p.d = d;
+	return ops->parse(&p, out);
 }

@@ -40,6 +40,10 @@ char *support_export_pov(const struct shape *s, enum pov_finish finish);
 struct scene *support_parse(const char *text);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
+/* Reads one object's tokens (those after its keyword) with the table's
+ * parse, as the scene reader does; the diagnostic names test.txt. */
+int support_parse_object(const struct shape_ops *ops, const char *text, struct shape **out,
+			 struct diag *d);
 
 /* A seeded random stream for the randomised tests (xorshift64*): the
  * same numbers for the same seed in every test program. */

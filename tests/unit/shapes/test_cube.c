@@ -7,7 +7,6 @@
 #include <string.h>
 
 #include "shapes/shapes.h"
-#include "syntax/parser_impl.h"
 #include "whitted/mesh.h"
 #include "whitted/pov.h"
 #include "support.h"
@@ -28,23 +27,6 @@ static int teardown_cube(void **state)
 {
 	shape_destroy(*state);
 	return 0;
-}
-
-/* Reads one object's tokens (those after its keyword) with the table's
- * parse, as the scene reader does; the diagnostic names test.txt. */
-static int parse_with(const struct shape_ops *ops, const char *text, struct shape **out,
-		      struct diag *d)
-{
-	struct parser p;
-
-	memset(&p, 0, sizeof(p));
-	diag_clear(d);
-	lexer_init(&p.lx, text, strlen(text));
-	p.name = "test.txt";
-	p.text = text;
-	p.len = strlen(text);
-	p.d = d;
-	return ops->parse(&p, out);
 }
 
 static void test_cube_hit_shrinks_t_max(void **state)
@@ -228,7 +210,7 @@ static void test_cube_parse(void **state)
 
 	(void)state;
 	assert_non_null(ops);
-	assert_int_equal(parse_with(ops, "-100 -100 10\n40.0\n0.0 0.5 1.0\n0.15 0.1 0.4 0.45\n10\n",
+	assert_int_equal(support_parse_object(ops, "-100 -100 10\n40.0\n0.0 0.5 1.0\n0.15 0.1 0.4 0.45\n10\n",
 				    &s, &d), 0);
 	assert_ptr_equal(s->ops, ops);
 	assert_true(shape_bounds(s, &box));
@@ -251,7 +233,7 @@ static void assert_parse_fails(const char *text, int rc, int line, int col, cons
 	struct shape *s = NULL;
 	struct diag d;
 
-	assert_int_equal(parse_with(ops, text, &s, &d), -rc);
+	assert_int_equal(support_parse_object(ops, text, &s, &d), -rc);
 	assert_null(s);
 	assert_string_equal(d.file, "test.txt");
 	if (d.line != line || d.col != col || !strstr(d.msg, msg)) {

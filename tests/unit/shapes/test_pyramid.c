@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "shapes/shapes.h"
-#include "syntax/parser_impl.h"
 #include "whitted/mesh.h"
 #include "whitted/pov.h"
 #include "support.h"
@@ -31,23 +30,6 @@ static int teardown_pyramid(void **state)
 {
 	shape_destroy(*state);
 	return 0;
-}
-
-/* Reads one object's tokens (those after its keyword) with the table's
- * parse, as the scene reader does; the diagnostic names test.txt. */
-static int parse_with(const struct shape_ops *ops, const char *text, struct shape **out,
-		      struct diag *d)
-{
-	struct parser p;
-
-	memset(&p, 0, sizeof(p));
-	diag_clear(d);
-	lexer_init(&p.lx, text, strlen(text));
-	p.name = "test.txt";
-	p.text = text;
-	p.len = strlen(text);
-	p.d = d;
-	return ops->parse(&p, out);
 }
 
 static void test_pyramid_hit_shrinks_t_max(void **state)
@@ -315,7 +297,7 @@ static void test_pyramid_parse_both_placements(void **state)
 	(void)state;
 	assert_non_null(corner_ops);
 	assert_non_null(centred_ops);
-	assert_int_equal(parse_with(corner_ops, text, &s, &d), 0);
+	assert_int_equal(support_parse_object(corner_ops, text, &s, &d), 0);
 	assert_ptr_equal(s->ops, corner_ops);
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-40, 0, 5), 0.0);
@@ -327,7 +309,7 @@ static void test_pyramid_parse_both_placements(void **state)
 	assert_near(s->mat.kr, 0.4, 0.0);
 	assert_near(s->mat.shininess, 1.0, 0.0);
 	shape_destroy(s);
-	assert_int_equal(parse_with(centred_ops, text, &s, &d), 0);
+	assert_int_equal(support_parse_object(centred_ops, text, &s, &d), 0);
 	assert_ptr_equal(s->ops, centred_ops);
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-55, -15, 5), 0.0);
@@ -343,7 +325,7 @@ static void assert_parse_fails(const struct shape_ops *ops, const char *text, in
 	struct shape *s = (struct shape *)&s;
 	struct diag d;
 
-	assert_int_equal(parse_with(ops, text, &s, &d), -rc);
+	assert_int_equal(support_parse_object(ops, text, &s, &d), -rc);
 	assert_null(s);
 	assert_string_equal(d.file, "test.txt");
 	if (d.line != line || d.col != col || !strstr(d.msg, msg)) {
