@@ -188,3 +188,14 @@ int support_parse_object(const struct shape_ops *ops, const char *text, struct s
 	p.d = d;
 	return ops->parse(&p, out);
 }
+
+struct scene *support_prepared(const char *text, bool with_floor)
+{
+	struct scene *s = support_parse(text);
+	struct diag d;
+
+	if (with_floor)
+		assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
+	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	return s;
+}

@@ -38,6 +38,10 @@ char *support_export_pov(const struct shape *s, enum pov_finish finish);
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */
 struct scene *support_parse(const char *text);
+/* Parses text (failing the test when it does not parse), adds the
+ * assignment's floor when with_floor, and prepares the scene for
+ * rendering on one thread.  The caller destroys the scene. */
+struct scene *support_prepared(const char *text, bool with_floor);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
 /* Reads one object's tokens (those after its keyword) with the table's

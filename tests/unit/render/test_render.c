@@ -22,23 +22,12 @@ static struct ray ray_make(double ox, double oy, double oz, double dx, double dy
 	return r;
 }
 
-static struct scene *prepared(const char *text, bool with_floor)
-{
-	struct scene *s = support_parse(text);
-	struct diag d;
-
-	if (with_floor)
-		assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	return s;
-}
-
 /* The colour along r in the scene of text (no floor), with the file's
  * recursion level and the given clamping. */
 static struct color trace_counted(const char *text, enum clamp_mode clamp, struct ray r,
 				  struct ray_counts *counts)
 {
-	struct scene *s = prepared(text, false);
+	struct scene *s = support_prepared(text, false);
 	struct render_settings rs;
 	struct color c;
 
@@ -245,7 +234,7 @@ static void test_render_one_reflection_bounce(void **state)
 
 static void test_render_reflection_level_argument(void **state)
 {
-	struct scene *s = prepared(MIRROR_SCENE(2, 0.6), false);
+	struct scene *s = support_prepared(MIRROR_SCENE(2, 0.6), false);
 	struct render_settings rs = { 2, RT_CLAMP_LEVEL };
 	struct ray r = at_plane();
 	struct color c;
@@ -382,7 +371,7 @@ static void check_no_acne(struct vec3 centre, double radius)
 	snprintf(text, sizeof(text), "1 1 1 sphere %.17g %.17g %.17g %.17g  1 1 1  0.1 0.9 0 0  1  "
 		 "1 %.17g %.17g %.17g 1 1 1", centre.x, centre.y, centre.z, radius,
 		 light.x, light.y, light.z);
-	s = prepared(text, false);
+	s = support_prepared(text, false);
 	for (i = 0; i < 40; i++) {
 		for (j = 0; j < 40; j++) {
 			struct vec3 target = vec3_add(centre, vec3_make(radius * (i - 19.5) / 20.0, 0,
@@ -427,7 +416,7 @@ static void test_render_no_acne_on_floor_and_triangle(void **state)
 	 * of white tiles: N.L and R.L are both (0, 0, 1).(L): with P =
 	 * (x, y, 0), L = (-x, -y, 100) / |.|, c = 0.4 + 0.2 N.L + 0.2 R.L
 	 * where R = (0, 0, 1), so c = 0.4 + 0.4 * 100 / |Lp - P|. */
-	struct scene *s = prepared("1 1 0 1 0 0 100 1 1 1", true);
+	struct scene *s = support_prepared("1 1 0 1 0 0 100 1 1 1", true);
 	struct render_settings rs = { 1, RT_CLAMP_LEVEL };
 	int i, j;
 
@@ -465,7 +454,7 @@ static void check_no_leak(const char *blocker, double x)
 	struct color c;
 
 	snprintf(text, sizeof(text), "1 1 1 %s  1 1 1  0 0 0 0 1  1 -100 0 5 1 1 1", blocker);
-	s = prepared(text, true);
+	s = support_prepared(text, true);
 	c = render_trace(s, &rs, &r, 1, NULL);
 	if (fabs(c.r - 0.4) > 1e-12) {
 		print_error("light leaks at (%g, 0, 0) beside %s: %g\n", x, blocker, c.r);
@@ -475,7 +464,7 @@ static void check_no_leak(const char *blocker, double x)
 	/* The control: without the blocker the point is lit.  N = +z faces
 	 * the ray, R = d - 2 (d.N) N mirrors d's z, and the floor's 0.4 0.2
 	 * 0.2, shininess 1 give c = 0.4 + 0.2 N.L + 0.2 R.L. */
-	s = prepared("1 1 0 1 -100 0 5 1 1 1", true);
+	s = support_prepared("1 1 0 1 -100 0 5 1 1 1", true);
 	c = render_trace(s, &rs, &r, 1, NULL);
 	assert_true(vec3_dot(refl, l) > 0);
 	assert_near(c.r, 0.4 + 0.2 * l.z + 0.2 * vec3_dot(refl, l), 1e-9);
@@ -517,7 +506,7 @@ static void check_lit_far_up(double z)
 
 	snprintf(text, sizeof(text), "1 1 1 sphere 0 0 %.17g 1  1 1 1  0.1 0.9 0 0  1  "
 		 "1 %.17g %.17g %.17g 1 1 1", z, light.x, light.y, light.z);
-	s = prepared(text, false);
+	s = support_prepared(text, false);
 	for (i = 0; i < 24; i++) {
 		for (j = 0; j < 48; j++) {
 			double th = 3.14159265358979 * (i + 0.5) / 24, ph = 6.28318530717959 * j / 48;
@@ -562,7 +551,7 @@ static void check_plane_lit_far_up(double z)
 	snprintf(text, sizeof(text), "1 1 1 triangle -1 -1 %.17g  1 -1 %.17g  0 1 %.17g  "
 		 "1 1 1  0.1 0.9 0 0  1  1 0 %.17g %.17g 1 1 1", z - 1, z - 1, z + 1, light.y,
 		 light.z);
-	s = prepared(text, false);
+	s = support_prepared(text, false);
 	for (i = 0; i < 20; i++) {
 		for (j = 0; j < 20; j++) {
 			/* Inside the triangle: y in (-1, 1), |x| < (1 - y) / 2. */
@@ -703,7 +692,7 @@ static void render_region(const struct scene *s, const struct camera *cam, int t
 static void test_render_threads_bit_identical(void **state)
 {
 	static const int threads[] = { 2, 3, 7 };
-	struct scene *s = prepared(course_scene, true);
+	struct scene *s = support_prepared(course_scene, true);
 	struct camera_params cp;
 	struct camera cam;
 	struct ray_counts n1, n;
@@ -738,7 +727,7 @@ static void test_render_region_matches_full_image(void **state)
 	static const int regions[][4] = {
 		{ 10, 20, 50, 33 }, { 0, 0, 1, 1 }, { 95, 95, 96, 96 }, { 0, 40, 96, 41 }, { 30, 0, 31, 96 },
 	};
-	struct scene *s = prepared(course_scene, true);
+	struct scene *s = support_prepared(course_scene, true);
 	struct camera_params cp;
 	struct camera cam;
 	struct ray_counts n;
@@ -798,7 +787,7 @@ static void test_render_bands_told_when_final(void **state)
 	static const int band_rows[] = { 1, 10, 16, 64, 1000 };
 	static const int threads[] = { 1, 2, 3, 7 };
 	static const int regions[][4] = { { 0, 0, 99, 99 }, { 5, 17, 90, 80 }, { 40, 3, 41, 99 } };
-	struct scene *s = prepared(course_scene, true);
+	struct scene *s = support_prepared(course_scene, true);
 	struct camera_params cp;
 	struct camera cam;
 	struct diag d;
@@ -853,7 +842,7 @@ static void test_render_bands_told_when_final(void **state)
 static void test_render_pixel_matches_trace(void **state)
 {
 	/* The image's pixel (px, py) is render_trace of camera_ray(px, py). */
-	struct scene *s = prepared(course_scene, true);
+	struct scene *s = support_prepared(course_scene, true);
 	struct render_settings rs = { 4, RT_CLAMP_LEVEL };
 	struct camera_params cp;
 	struct camera cam;
@@ -1143,7 +1132,7 @@ static void test_render_near_plane_hides_near_objects(void **state)
 	const char *base = "1 1 1 sphere 0 0 0 30  0 1 0  0.5 0 0 0  1  0";
 	const char *with_near = "1 1 2 sphere 0 0 0 30  0 1 0  0.5 0 0 0  1  "
 				"sphere 0 -195 10 2  1 0 0  1 0 0 0  1  0";
-	struct scene *a = prepared(base, false), *b = prepared(with_near, false);
+	struct scene *a = support_prepared(base, false), *b = support_prepared(with_near, false);
 	struct camera_params cp;
 	struct camera cam;
 	struct image ia, ib;

@@ -14,20 +14,9 @@
 #include "whitted/scenefile.h"
 #include "support.h"
 
-static struct scene *prepared(const char *text, bool with_floor)
-{
-	struct scene *s = support_parse(text);
-	struct diag d;
-
-	if (with_floor)
-		assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	return s;
-}
-
 static struct color trace(const char *text, unsigned rules, struct ray r, bool floor)
 {
-	struct scene *s = prepared(text, floor);
+	struct scene *s = support_prepared(text, floor);
 	struct render_settings rs;
 	struct color c;
 
@@ -49,7 +38,7 @@ static void assert_color(struct color c, double r, double g, double b)
 
 static void test_shade_rules_none_is_render_trace(void **state)
 {
-	struct scene *s = prepared(course_scene, true);
+	struct scene *s = support_prepared(course_scene, true);
 	struct camera_params p;
 	struct camera cam;
 	struct diag d;
