@@ -162,8 +162,10 @@ int grade_cause_image(const struct grade_job *job, const struct image *ref,
 /* The camera found from an image (grade_fit_camera). */
 struct grade_fit {
 	struct camera_params camera;	/* the camera found */
-	double score;			/* its mean squared difference on the last level
-					 * (grey levels: the fit looks at shapes) */
+	double score;			/* its mean squared difference on the fit's last
+					 * stage's level, before the polish on the
+					 * image's own pixels (grey levels: the fit
+					 * looks at shapes) */
 	double start_score;		/* the first start's on the same level */
 	long evals;			/* candidates rendered */
 };

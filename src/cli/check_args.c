@@ -214,9 +214,9 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		if (first == argc)
 			return tool_usage_error("no IMAGE given");
 	} else {
-		if (cli_scene_and_operand(&o->scene, argc, argv, &first, "IMAGE", " (whitted grade takes many)",
-					  &d) < 0)
-			return tool_usage_error("%s", d.msg);
+		if ((rc = cli_scene_and_operand(&o->scene, argc, argv, &first, "IMAGE",
+						" (whitted grade takes many)")) != 0)
+			return rc;
 		if (o->scene.path && check_looks_like_image(o->scene.path) &&
 		    !check_looks_like_image(argv[first]))
 			return tool_usage_error("'%s' is an image and '%s' is not: SCENE comes first "

@@ -100,8 +100,8 @@ static int explain_args(int argc, char **argv, struct explain_options *o)
 			return tool_unknown_option(argv[optind - 1], longopts);
 	}
 	first = optind;
-	if (cli_scene_and_operand(&o->scene, argc, argv, &first, "pixel X,Y", "", &d) < 0)
-		return tool_usage_error("%s", d.msg);
+	if ((rc = cli_scene_and_operand(&o->scene, argc, argv, &first, "pixel X,Y", "")) != 0)
+		return rc;
 	return explain_pixel_arg(argv[first], o);
 }
 

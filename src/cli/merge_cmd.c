@@ -109,7 +109,7 @@ int merge_main(int argc, char **argv)
 		switch (c) {
 		case 'o':
 			if (tool_file_arg("--output", optarg, &output) != 0)
-				return 2;
+				return TOOL_EXIT_USAGE;
 			break;
 		case OPT_FORMAT:
 			format = image_format_from_name(optarg);

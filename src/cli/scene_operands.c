@@ -1,6 +1,7 @@
 /* The operands after a command's options: the SCENE (none with
  * --test-scene) and what follows it. */
 #include "cli/scene_opts.h"
+#include "cli/tool.h"
 
 int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int first,
 		      const char **path, struct diag *d)
@@ -24,17 +25,16 @@ int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int firs
 }
 
 int cli_scene_and_operand(struct cli_scene *o, int argc, char **argv, int *first, const char *what,
-			  const char *hint, struct diag *d)
+			  const char *hint)
 {
 	if (!o->test_scene) {
 		if (*first == argc)
-			return diag_fail(d, RT_E_INVALID, "no SCENE given");
+			return tool_usage_error("no SCENE given");
 		o->path = argv[(*first)++];
 	}
 	if (*first == argc)
-		return diag_fail(d, RT_E_INVALID, "no %s given", what);
+		return tool_usage_error("no %s given", what);
 	if (*first + 1 != argc)
-		return diag_fail(d, RT_E_INVALID, "one %s expected, found also '%s'%s", what, argv[*first + 1],
-				 hint);
+		return tool_usage_error("one %s expected, found also '%s'%s", what, argv[*first + 1], hint);
 	return 0;
 }

@@ -138,11 +138,12 @@ int cli_scene_load(struct cli_scene *o, const char *path,
 int cli_scene_operand(const struct cli_scene *o, int argc, char **argv, int first,
 		      const char **path, struct diag *d);
 
-/* SCENE (unless --test-scene) into o->path, then exactly one operand more,
- * `what` in the messages ("no IMAGE given"; "one IMAGE expected, found
- * also 'x'" and hint).  *first moves past SCENE. */
+/* SCENE (unless --test-scene) into o->path, then exactly one operand more:
+ * 0, or the usage error printed ("no IMAGE given"; "one IMAGE expected,
+ * found also 'x'" and hint) and TOOL_EXIT_USAGE.  *first moves past
+ * SCENE. */
 int cli_scene_and_operand(struct cli_scene *o, int argc, char **argv, int *first, const char *what,
-			  const char *hint, struct diag *d);
+			  const char *hint);
 
 /* The default output name: SCENE's base name without its extension ("stdin"
  * for "-", "test-scene" for NULL) followed by suffix, e.g. "-tile-3.png".

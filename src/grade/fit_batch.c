@@ -55,8 +55,11 @@ int fit_batch_open(struct fit_batch *b, const struct fit_level *l, const struct 
 	b->job = job;
 	b->base = base;
 	for (i = 0; i < nt; i++)
-		if ((rc = fit_scratch_alloc(&b->scratch[i], l, d)) < 0)
+		if ((rc = fit_scratch_alloc(&b->scratch[i], l, d)) < 0) {
+			/* The threads' scratch allocated so far goes too. */
+			fit_batch_close(b);
 			return rc;
+		}
 	return 0;
 }
 

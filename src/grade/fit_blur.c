@@ -33,11 +33,13 @@ static void fit_blur_rows(const float *in, float *out, int w, int h, const doubl
 				const int lo = -t - x0 > 0 ? -t - x0 : 0;
 				const int hi = w - t - x0 < n ? w - t - x0 : n;
 				const double kt = k[t + r];
-				const float *p = row + 3 * (ptrdiff_t)(x0 + t);
+				/* Tap j of the chunk is row[3 * (x0 + t) + j]: the
+				 * index is not negative from 3 * lo on. */
+				const ptrdiff_t at = 3 * (ptrdiff_t)(x0 + t);
 				for (j = lo; j < hi; j++)
 					ws[j] += kt;
 				for (j = 3 * lo; j < 3 * hi; j++)
-					acc[j] += kt * p[j];
+					acc[j] += kt * row[at + j];
 			}
 			for (j = 0; j < n; j++)
 				for (c = 0; c < 3; c++)

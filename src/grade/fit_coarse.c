@@ -105,8 +105,8 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 /* The score of camera p (at eye e) by resampling the wide render: the
  * mean squared difference with the target; a cell whose direction falls
  * outside the wide render counts as 128 levels off.  The sum only grows:
- * once it reaches `limit` (the score a camera must beat to be kept), the
- * rest is not summed and INFINITY returned, which changes no choice. */
+ * once it passes `limit` (a score some kept camera has), the rest is not
+ * summed and INFINITY returned, which changes no choice. */
 static double coarse_score(const struct coarse_work *w, const struct camera_params *p,
 			   const struct camera *wide, const float *img, double limit)
 {
@@ -121,7 +121,7 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 	if (camera_init_rect(&cam, p, t->full_w, t->full_h, &d) < 0)
 		return INFINITY;
 	for (k = 0; k < t->w * t->h; k++) {
-		if (k % t->w == 0 && e / cells >= limit)
+		if (k % t->w == 0 && e / cells > limit)
 			return INFINITY;
 		double u = t->u[k] * cam.pixel_scale_x - cam.half_width;
 		double v = cam.half_height - t->v[k] * cam.pixel_scale;
@@ -229,12 +229,6 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 						break;
 					}
 			}
-	/* The finer steps start from the best of the grid (the steps' middle
-	 * is that camera, of that score): what cannot beat it stops early. */
-	if (top_score[0] < INFINITY) {
-		coarse_camera(&start, ce->eye, top[0][0], top[0][1], 0.0, top[0][2], w->start, &best);
-		ce->score = top_score[0];
-	}
 	for (k = 0; k < COARSE_REFINE && top_score[k] < INFINITY; k++)
 		for (a = 0; a < COARSE_LEN(coarse_fine_turns); a++)
 			for (b = 0; b < COARSE_LEN(coarse_fine_turns); b++)
@@ -245,7 +239,11 @@ static void coarse_eye_search(const struct coarse_work *w, struct coarse_eye *ce
 							      top[k][1] + coarse_fine_turns[b],
 							      coarse_fine_rolls[r],
 							      top[k][2] + coarse_fine_fovs[f], w->start, &p);
-						s = coarse_score(w, &p, &wide, img, ce->score);
+						/* The best of the grid is the steps'
+						 * middle: a step worse than it is not
+						 * the best, and stops early. */
+						s = coarse_score(w, &p, &wide, img,
+								 fmin(ce->score, top_score[0]));
 						if (s < ce->score) {
 							ce->score = s;
 							best = p;
