@@ -1,7 +1,8 @@
 /* The camera fit's pieces: a camera to its seven numbers and back, the
  * local moves (an orbit keeps the pivot in place, a dolly its size), the
  * levels (the target is the submission's own pixels; the true camera
- * scores 0; the blur keeps a flat image flat; a checkerboard finer than
+ * scores 0; the blur keeps a flat image flat and is the Gaussian written
+ * out, bit for bit; a checkerboard finer than
  * the pixels weighs nothing), and the flow-based Jacobian against finite
  * differences on a smooth level. */
 #include <math.h>
@@ -198,6 +199,64 @@ static void test_fit_blur_keeps_flat_and_sum(void **state)
 	assert_true(img[3 * (10 * 21 + 10)] < 45.0f && img[3 * (10 * 21 + 11)] > 1.0f);
 }
 
+/* The blur is the Gaussian written out pixel by pixel: each output the
+ * sum of the taps inside the grid (t from -r up, weights exp(-t^2 / 2
+ * sigma^2), r = ceil(3 sigma) at most 24) over the sum of their weights,
+ * rows first, then columns; bit for bit, on sizes about the blur's chunk
+ * of 128 pixels, and a kernel wider than the grid. */
+static void naive_pass(const float *in, float *out, int w, int h, double sigma, bool rows)
+{
+	int r = (int)ceil(3.0 * sigma), x, y, t, c;
+
+	r = r > 24 ? 24 : r;
+	for (y = 0; y < h; y++)
+		for (x = 0; x < w; x++) {
+			double sum[3] = { 0.0, 0.0, 0.0 }, ws = 0.0;
+			for (t = -r; t <= r; t++) {
+				int xx = rows ? x + t : x, yy = rows ? y : y + t;
+				double k = exp(-(double)t * t / (2.0 * sigma * sigma));
+				if (xx < 0 || xx >= w || yy < 0 || yy >= h)
+					continue;
+				for (c = 0; c < 3; c++)
+					sum[c] += k * in[3 * (yy * w + xx) + c];
+				ws += k;
+			}
+			for (c = 0; c < 3; c++)
+				out[3 * (y * w + x) + c] = (float)(sum[c] / ws);
+		}
+}
+
+static void test_fit_blur_is_the_gaussian(void **state)
+{
+	static const int sizes[][2] = { { 1, 1 }, { 129, 3 }, { 3, 130 }, { 257, 2 }, { 40, 33 } };
+	static const double sigmas[] = { 0.5, 1.7, 3.0, 20.0 };
+	size_t a, b;
+	int i;
+
+	(void)state;
+	support_rng_seed(29);
+	for (a = 0; a < sizeof(sizes) / sizeof(sizes[0]); a++)
+		for (b = 0; b < sizeof(sigmas) / sizeof(sigmas[0]); b++) {
+			const int w = sizes[a][0], h = sizes[a][1], n = 3 * w * h;
+			float *img = test_malloc(sizeof(float) * (size_t)n);
+			float *tmp = test_malloc(sizeof(float) * (size_t)n);
+			float *want = test_malloc(sizeof(float) * (size_t)n);
+			float *mid = test_malloc(sizeof(float) * (size_t)n);
+			for (i = 0; i < n; i++)
+				img[i] = (float)support_uniform(0.0, 255.0);
+			naive_pass(img, mid, w, h, sigmas[b], true);
+			naive_pass(mid, want, w, h, sigmas[b], false);
+			fit_blur(img, tmp, w, h, sigmas[b]);
+			if (memcmp(img, want, sizeof(float) * (size_t)n) != 0)
+				fail_msg("%dx%d, sigma %g: the blur differs from the Gaussian written out", w, h,
+					 sigmas[b]);
+			test_free(img);
+			test_free(tmp);
+			test_free(want);
+			test_free(mid);
+		}
+}
+
 /* A checkerboard of single pixels weighs nothing; a straight edge counts. */
 static void test_fit_level_weighs_aliased_cells(void **state)
 {
@@ -326,6 +385,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_fit_moves),
 		cmocka_unit_test(test_fit_level_true_camera_scores_nothing),
 		cmocka_unit_test(test_fit_blur_keeps_flat_and_sum),
+		cmocka_unit_test(test_fit_blur_is_the_gaussian),
 		cmocka_unit_test(test_fit_level_weighs_aliased_cells),
 		cmocka_unit_test(test_fit_level_jacobian_against_differences),
 		cmocka_unit_test(test_fit_level_with_a_cause),
