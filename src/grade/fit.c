@@ -343,6 +343,19 @@ static int fit_polish(const struct grade_job *job, const struct camera_params *s
 	return 0;
 }
 
+/* Keeps the later fit `again` in out when it ran and scores lower on the
+ * same last level; either way out counts both fits' candidates. */
+static void fit_keep_better(struct grade_fit *out, struct grade_fit *again)
+{
+	if (again->evals > 0 && again->score < out->score) {
+		again->evals += out->evals;
+		again->start_score = out->start_score;
+		*out = *again;
+	} else {
+		out->evals += again->evals;
+	}
+}
+
 /* A second pass (and the refit with a cause) starts on this level:
  * blurred enough to leave the floor's alias a first pass settled on for
  * the true camera a few cells away, sharp enough to stay near. */
@@ -367,13 +380,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	if (out->score > FIT_SETTLED_SCORE) {
 		if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
 			return rc;
-		if (again.evals > 0 && again.score < out->score) {
-			again.evals += out->evals;
-			again.start_score = out->start_score;
-			*out = again;
-		} else {
-			out->evals += again.evals;
-		}
+		fit_keep_better(out, &again);
 	}
 	if (out->score > FIT_SETTLED_SCORE) {
 		struct camera_params moved;
@@ -382,13 +389,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		if (rc > 0) {
 			if ((rc = fit_run(job, &moved, 1, sub, NULL, FIT_DOLLY_STAGE + 1, &again, d)) < 0)
 				return rc;
-			if (again.score < out->score) {
-				again.evals += out->evals;
-				again.start_score = out->start_score;
-				*out = again;
-			} else {
-				out->evals += again.evals;
-			}
+			fit_keep_better(out, &again);
 		}
 	}
 	return fit_polish(job, &starts[0], sub, NULL, out, d);
@@ -399,6 +400,7 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 			  struct grade_fit *out, struct diag *d)
 {
 	struct grade_variant v;
+	int rc;
 
 	/* The fit's levels trace through pixel centres and saturate: a
 	 * cause that moves the rays to the corners or wraps the bytes is not
@@ -406,7 +408,6 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v) || v.corner ||
 	    v.wrap)
 		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
-	int rc = fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
-
+	rc = fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
 	return rc < 0 ? rc : fit_polish(job, start, sub, &v, out, d);
 }
