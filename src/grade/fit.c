@@ -313,8 +313,14 @@ static int fit_dolly_scan(const struct grade_job *job, const struct camera_param
 	return 1;
 }
 
-/* The camera in out refined on the polish level (fit_polish_stage); out's
- * scores stay the last stage's. */
+/* A fit whose last level is within this mean squared grey difference
+ * has its camera to a small fraction of a cell there: the polish would
+ * not move it by a visible amount, and is skipped. */
+#define FIT_POLISHED_SCORE 0.25
+
+/* The camera in out refined on the polish level (fit_polish_stage), unless
+ * it is already within FIT_POLISHED_SCORE; out's scores stay the last
+ * stage's. */
 static int fit_polish(const struct grade_job *job, const struct camera_params *start,
 		      const struct image *sub, const struct grade_variant *variant, struct grade_fit *out,
 		      struct diag *d)
@@ -325,6 +331,8 @@ static int fit_polish(const struct grade_job *job, const struct camera_params *s
 	long evals = 0;
 	int rc;
 
+	if (out->score <= FIT_POLISHED_SCORE)
+		return 0;
 	fit_view_of(&out->camera, x);
 	if ((rc = fit_stage_level(&fit_polish_stage, sub, x[FIT_FOV], &level, &pixel_deg, d)) < 0)
 		return rc;

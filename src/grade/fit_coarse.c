@@ -116,12 +116,16 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 	struct camera cam;
 	struct diag d;
 	double e = 0.0;
-	int k, c;
+	int i, k, c;
 
 	if (camera_init_rect(&cam, p, t->full_w, t->full_h, &d) < 0)
 		return INFINITY;
-	for (k = 0; k < t->w * t->h; k++) {
-		if (k % t->w == 0 && e / cells > limit)
+	for (i = 0; i < t->w * t->h; i++) {
+		/* Bottom row first: the sky at the top is alike for most
+		 * cameras, the floor and the objects below tell them apart, so
+		 * a camera that cannot win is cut off early. */
+		k = (t->h - 1 - i / t->w) * t->w + i % t->w;
+		if (i % t->w == 0 && e / cells > limit)
 			return INFINITY;
 		double u = t->u[k] * cam.pixel_scale_x - cam.half_width;
 		double v = cam.half_height - t->v[k] * cam.pixel_scale;
