@@ -266,8 +266,8 @@ static const double fit_dolly_steps[] = { -0.3, -0.15, 0.15, 0.3 };
 /* The best camera on the dolly line about out's into *best: 1 when it
  * beats out's on the level, 0 when none does. */
 static int fit_dolly_scan(const struct grade_job *job, const struct camera_params *start,
-			  const struct image *sub, struct grade_fit *out, struct camera_params *best,
-			  struct diag *d)
+			  const struct image *sub, const struct grade_variant *variant,
+			  struct grade_fit *out, struct camera_params *best, struct diag *d)
 {
 	struct fit_level level;
 	struct fit_batch batch;
@@ -284,6 +284,7 @@ static int fit_dolly_scan(const struct grade_job *job, const struct camera_param
 		return 0;
 	if ((rc = fit_stage_level(&fit_stages[FIT_DOLLY_STAGE], sub, x[FIT_FOV], &level, &pixel_deg, d)) < 0)
 		return rc;
+	level.variant = variant;
 	if ((rc = fit_batch_open(&batch, &level, job, start, d)) < 0) {
 		fit_level_free(&level);
 		return rc;
@@ -352,16 +353,18 @@ static int fit_polish(const struct grade_job *job, const struct camera_params *s
 }
 
 /* Keeps the later fit `again` in out when it ran and scores lower on the
- * same last level; either way out counts both fits' candidates. */
-static void fit_keep_better(struct grade_fit *out, struct grade_fit *again)
+ * same last level (true then); either way out counts both fits'
+ * candidates. */
+static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
 {
 	if (again->evals > 0 && again->score < out->score) {
 		again->evals += out->evals;
 		again->start_score = out->start_score;
 		*out = *again;
-	} else {
-		out->evals += again->evals;
+		return true;
 	}
+	out->evals += again->evals;
+	return false;
 }
 
 /* A second pass (and the refit with a cause) starts on this level:
@@ -373,11 +376,25 @@ static void fit_keep_better(struct grade_fit *out, struct grade_fit *again)
  * no alias looks that much like the image, so no second pass. */
 #define FIT_SETTLED_SCORE 1.0
 
-int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
-		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
+/* A fit this far from the image (a mean squared grey difference on the
+ * last level: 50 is about 7 levels everywhere) was pulled away by the
+ * image's tone: a gamma-encoded image is brighter everywhere, and the best
+ * camera for the plain reference is then one that sees more of the bright
+ * parts (on sadathossain01, a sphere filling a view 6 degrees wide).  The
+ * fit is made once more with the gamma curve on the reference's colours,
+ * the camera and the mistake fitted at once, and kept when it scores
+ * lower. */
+#define FIT_TONE_SCORE 50.0
+
+/* The passes from the starts with the variant's colours (NULL: the
+ * reference's): the first, and unless it settled, a second from where it
+ * ended and the dolly line. */
+static int fit_passes(const struct grade_job *job, const struct camera_params *starts,
+		      int n_starts, const struct image *sub, const struct grade_variant *variant,
+		      struct grade_fit *out, struct diag *d)
 {
 	struct grade_fit again;
-	int rc = fit_run(job, starts, n_starts, sub, NULL, 0, out, d);
+	int rc = fit_run(job, starts, n_starts, sub, variant, 0, out, d);
 
 	/* The first pass ends on the floor's alias nearest its coarse
 	 * guess; a second from where it ended, with one hypothesis, often
@@ -386,21 +403,40 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	if (rc < 0)
 		return rc;
 	if (out->score > FIT_SETTLED_SCORE) {
-		if ((rc = fit_run(job, &out->camera, 1, sub, NULL, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
+		if ((rc = fit_run(job, &out->camera, 1, sub, variant, FIT_REFIT_FIRST_STAGE, &again, d)) < 0)
 			return rc;
 		fit_keep_better(out, &again);
 	}
 	if (out->score > FIT_SETTLED_SCORE) {
 		struct camera_params moved;
-		if ((rc = fit_dolly_scan(job, &starts[0], sub, out, &moved, d)) < 0)
+		if ((rc = fit_dolly_scan(job, &starts[0], sub, variant, out, &moved, d)) < 0)
 			return rc;
 		if (rc > 0) {
-			if ((rc = fit_run(job, &moved, 1, sub, NULL, FIT_DOLLY_STAGE + 1, &again, d)) < 0)
+			if ((rc = fit_run(job, &moved, 1, sub, variant, FIT_DOLLY_STAGE + 1, &again, d)) < 0)
 				return rc;
 			fit_keep_better(out, &again);
 		}
 	}
-	return fit_polish(job, &starts[0], sub, NULL, out, d);
+	return 0;
+}
+
+int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
+		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
+{
+	struct grade_variant tone;
+	const struct grade_variant *kept = NULL;
+	int rc = fit_passes(job, starts, n_starts, sub, NULL, out, d);
+
+	if (rc < 0)
+		return rc;
+	if (out->score > FIT_TONE_SCORE && grade_variant_of(job, RT_CAUSE_GAMMA, 0, &tone)) {
+		struct grade_fit again;
+		if ((rc = fit_passes(job, starts, n_starts, sub, &tone, &again, d)) < 0)
+			return rc;
+		if (fit_keep_better(out, &again))
+			kept = &tone;
+	}
+	return fit_polish(job, &starts[0], sub, kept, out, d);
 }
 
 int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,

@@ -69,6 +69,19 @@ else
 	skip moved-refit-sanitized "no sanitized whitted given (make comparetest gives one)"
 fi
 
+# ... and a mistake that pulls the plain fit far away: gamma brightens
+# every pixel, and the plain reference's nearest camera looks into a
+# sphere (another cause is then named: "transposed" at 48 pixels); the
+# fit made again with the reference gamma-encoded finds the camera, and
+# gamma is named.
+SAD=$ROOT/tests/data/course-files/sadathossain01.txt
+python3 "$REF" "$SAD" "$I/moved-gamma.ppm" --size 48 --mistake gamma --eye 22.6229,-176.0732,5.6145 \
+	--look 26.8829,-76.1901,7.8965 --up -0.0031,-0.0227,0.9997 --fov 62.512
+run compare -q --json -s 48 "$SAD" "$I/moved-gamma.ppm"
+json moved-tone 'assert j["camera"]["moved"] is True, j["camera"]
+assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
+assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["psnr"] >= 35, j["best"]'
+
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
 python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
