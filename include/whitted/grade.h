@@ -168,16 +168,21 @@ struct grade_fit {
 					 * looks at shapes) */
 	double start_score;		/* the first start's on the same level */
 	long evals;			/* candidates rendered */
+	enum grade_cause cause;		/* the mistake rendered in place of the
+					 * reference for the camera found, or
+					 * RT_CAUSE_NONE (the plain reference) */
+	int form;			/* its form */
 };
 
 /* Finds the camera that took sub, whose size the job's camera has: the
  * camera whose render (job's scene and settings) comes nearest sub,
  * searched from the n_starts cameras given (the first one's near plane
  * and aspect are kept).  When no camera comes near the plain reference,
- * the search is made again with the reference gamma-encoded (an image's
- * tone pulls a fit of the plain reference away), and the nearer kept; the
- * score is then that render's.  Deterministic: the same answer for any
- * number of threads. */
+ * the search is made again with each mistake that changes most of an
+ * image rendered in its place (gamma; the floor's tiles swapped: they
+ * pull a fit of the plain reference away), and the nearest kept; the
+ * score is then that render's, and cause and form say which.
+ * Deterministic: the same answer for any number of threads. */
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d);
 

@@ -147,6 +147,7 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 
 	memset(out, 0, sizeof(*out));
 	out->camera = starts[0];
+	out->cause = RT_CAUSE_NONE;
 	for (k = 0; k < FIT_HYPOTHESES; k++)
 		pivot[k] = 100.0;
 	fit_view_of(&starts[0], hyp[0]);
@@ -377,14 +378,25 @@ static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
 #define FIT_SETTLED_SCORE 1.0
 
 /* A fit this far from the image (a mean squared grey difference on the
- * last level: 50 is about 7 levels everywhere) was pulled away by the
- * image's tone: a gamma-encoded image is brighter everywhere, and the best
- * camera for the plain reference is then one that sees more of the bright
- * parts (on sadathossain01, a sphere filling a view 6 degrees wide).  The
- * fit is made once more with the gamma curve on the reference's colours,
- * the camera and the mistake fitted at once, and kept when it scores
- * lower. */
-#define FIT_TONE_SCORE 50.0
+ * last level: 50 is about 7 levels everywhere) was pulled away by a
+ * mistake that changes most of the image: the passes are made once more
+ * with each of these rendered in place of the reference (the camera and
+ * the mistake fitted at once), and the nearest of all kept.  Gamma makes
+ * every pixel brighter, and the plain reference's nearest camera is then
+ * one that sees more of the bright parts (on sadathossain01, a sphere
+ * filling a view 6 degrees wide); the floor's tiles swapped make the
+ * floor's every cell the wrong colour, and the plain fit ends a dolly and
+ * an alias away (on an-akhand, 48 units back at a field of view of 49
+ * degrees instead of 70).  The later refit with a cause (grade_fit_camera_with)
+ * starts from the camera found, too near to leave such a camera. */
+#define FIT_PULLED_SCORE 50.0
+static const struct {
+	enum grade_cause cause;
+	int form;
+} fit_pulling_causes[] = {
+	{ RT_CAUSE_GAMMA, 0 },
+	{ RT_CAUSE_FLOOR_SWAPPED, 0 },
+};
 
 /* The passes from the starts with the variant's colours (NULL: the
  * reference's): the first, and unless it settled, a second from where it
@@ -423,18 +435,23 @@ static int fit_passes(const struct grade_job *job, const struct camera_params *s
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
 {
-	struct grade_variant tone;
+	struct grade_variant pulls[sizeof(fit_pulling_causes) / sizeof(fit_pulling_causes[0])];
 	const struct grade_variant *kept = NULL;
+	size_t k;
 	int rc = fit_passes(job, starts, n_starts, sub, NULL, out, d);
 
 	if (rc < 0)
 		return rc;
-	if (out->score > FIT_TONE_SCORE && grade_variant_of(job, RT_CAUSE_GAMMA, 0, &tone)) {
+	for (k = 0; k < sizeof(pulls) / sizeof(pulls[0]) && out->score > FIT_PULLED_SCORE; k++) {
 		struct grade_fit again;
-		if ((rc = fit_passes(job, starts, n_starts, sub, &tone, &again, d)) < 0)
+		if (!grade_variant_of(job, fit_pulling_causes[k].cause, fit_pulling_causes[k].form, &pulls[k]))
+			continue;
+		if ((rc = fit_passes(job, starts, n_starts, sub, &pulls[k], &again, d)) < 0)
 			return rc;
+		again.cause = fit_pulling_causes[k].cause;
+		again.form = fit_pulling_causes[k].form;
 		if (fit_keep_better(out, &again))
-			kept = &tone;
+			kept = &pulls[k];
 	}
 	return fit_polish(job, &starts[0], sub, kept, out, d);
 }
@@ -453,5 +470,7 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 	    v.wrap)
 		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
 	rc = fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, out, d);
+	out->cause = cause;
+	out->form = form;
 	return rc < 0 ? rc : fit_polish(job, start, sub, &v, out, d);
 }

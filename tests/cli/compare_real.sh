@@ -82,6 +82,17 @@ json moved-tone 'assert j["camera"]["moved"] is True, j["camera"]
 assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
 assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["psnr"] >= 35, j["best"]'
 
+# ... and the floor's tiles swapped, which turn every cell of the floor
+# the other colour: the plain fit ends at a camera that sees little of
+# the floor (the old fit named recursion-fewer here); the fit made again
+# with the tiles swapped finds the camera, and judges it with them.
+python3 "$REF" "$AK" "$I/moved-tiles.ppm" --size 96 --mistake floor-swapped \
+	--eye 43.0162,-195.2469,18.6553 --look 41.3437,-95.2776,10.1470 --up 0,0,1 --fov 67.229
+run compare -q --json -s 96 "$AK" "$I/moved-tiles.ppm"
+json moved-tiles-pull 'assert j["camera"]["moved"] is True, j["camera"]
+assert j["first"] == ["floor-swapped"], (j["first"], j["diagnosis"])
+assert j["best"]["causes"] == ["camera", "floor-swapped"] and j["best"]["explains"], j["best"]'
+
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
 python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
