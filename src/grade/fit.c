@@ -77,7 +77,7 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 		hf[k] = INFINITY;
 	for (k = 0; k < n; k++)
 		fit_view_of(&starts[k], xs + k * FIT_DIM);
-	if ((rc = fit_coarse_search(b->job, &starts[0], sub, FIT_COARSE_RADIUS, FIT_COARSE_SPACING,
+	if ((rc = fit_coarse_search(b->job, b->level->variant, &starts[0], sub, FIT_COARSE_RADIUS, FIT_COARSE_SPACING,
 				    fit_scene_centre(b->job->scene),
 				    (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs, FIT_COARSE_KEEP, d)) < 0)
 		return rc;

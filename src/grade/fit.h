@@ -95,9 +95,11 @@ double fit_level_score(const struct fit_level *l, const struct grade_job *job,
  * start's (turned about the start's direction) and on an orbit about the
  * scene's centre (looking at it), each with the best of a few
  * directions, rolls and fields of view scored on warps of one wide
- * render; the best n_out cameras (views) and their scores, best first. */
-int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
-		      const struct image *sub, double radius, double spacing, struct vec3 centre,
+ * render (with the variant's colours when not NULL: a gamma image is
+ * searched for with gamma on); the best n_out cameras (views) and their
+ * scores, best first. */
+int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
+		      const struct camera_params *start, const struct image *sub, double radius, double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d);
 /* The middle of the scene's objects (the floor and unbounded shapes
  * aside; the origin when there are none). */

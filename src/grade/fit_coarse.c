@@ -49,6 +49,7 @@ struct coarse_eye {
 
 struct coarse_work {
 	const struct grade_job *job;
+	const struct grade_variant *variant;	/* rendered in the reference's place, or NULL */
 	const struct camera_params *start;
 	const struct coarse_target *t;
 	struct coarse_eye *eyes;
@@ -68,7 +69,9 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 	struct ray rays[COARSE_WIDE_PX];
 	struct color col[COARSE_WIDE_PX];
 	struct diag d;
-	bool packets = render_packets_wanted(w->job->scene->accel) && !w->job->scene->glass;
+	const struct grade_variant *var = w->variant;
+	const bool plain = grade_variant_traces_plain(w->job, var);
+	bool packets = plain && render_packets_wanted(w->job->scene->accel) && !w->job->scene->glass;
 	int x, y;
 
 	p.look = vec3_add(e, dir);
@@ -90,9 +93,15 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 			rays[x] = camera_ray(&cam, x, y);
 		if (packets)
 			render_rays_packets(&rj, rays, n, &tree, col);
-		else
+		else if (plain)
 			for (x = 0; x < n; x++)
 				col[x] = render_trace(w->job->scene, &rj.settings, &rays[x], 1, NULL);
+		else
+			for (x = 0; x < n; x++)
+				col[x] = grade_variant_trace(w->job, var, &rays[x]);
+		if (var)
+			for (x = 0; x < n; x++)
+				col[x] = grade_variant_encode(var, col[x]);
 		for (x = 0; x < n; x++) {
 			struct color c = color_clamp(col[x]);
 			float *o = img + 3 * (y * n + x);
@@ -387,8 +396,8 @@ static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
 
 /* Long: the coarse search's two looks (the grid of eyes, then around the
  * best) and the merge of their candidates, over one work struct. */
-int fit_coarse_search(const struct grade_job *job, const struct camera_params *start,
-		      const struct image *sub, double radius, double spacing, struct vec3 centre,
+int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
+		      const struct camera_params *start, const struct image *sub, double radius, double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)
 {
 	struct coarse_target t;
@@ -404,6 +413,7 @@ int fit_coarse_search(const struct grade_job *job, const struct camera_params *s
 	}
 	memset(&w, 0, sizeof(w));
 	w.job = job;
+	w.variant = variant;
 	w.start = start;
 	w.t = &t;
 	w.eyes = rt_reallocarray(NULL, cap, sizeof(*w.eyes));

@@ -289,7 +289,8 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 	struct color col[FIT_RAYS];
 	struct diag d;
 	const struct grade_variant *var = l->variant;
-	bool packets = !var && render_packets_wanted(job->scene->accel) && !job->scene->glass;
+	const bool plain = grade_variant_traces_plain(job, var);
+	bool packets = plain && render_packets_wanted(job->scene->accel) && !job->scene->glass;
 	int k, i, m;
 
 	if (!(v[FIT_FOV] > 1.0 && v[FIT_FOV] < 170.0) || !(fabs(v[FIT_PITCH]) < 89.0))
@@ -312,12 +313,15 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 			rays[i] = camera_ray(&cam, l->sx[k + i], l->sy[k + i]);
 		if (packets)
 			render_rays_packets(&rj, rays, m, &tree, col);
-		else if (!var)
+		else if (plain)
 			for (i = 0; i < m; i++)
 				col[i] = render_trace(job->scene, &rj.settings, &rays[i], 1, NULL);
 		else
 			for (i = 0; i < m; i++)
-				col[i] = grade_variant_encode(var, grade_variant_trace(job, var, &rays[i]));
+				col[i] = grade_variant_trace(job, var, &rays[i]);
+		if (var)
+			for (i = 0; i < m; i++)
+				col[i] = grade_variant_encode(var, col[i]);
 		for (i = 0; i < m; i++) {
 			float *c = s->cells + 3 * ((k + i) / per);
 			struct color q = color_clamp(col[i]);

@@ -60,6 +60,11 @@ int grade_transform_map(const struct image *ref, unsigned map, struct image *out
 struct color grade_variant_trace(const struct grade_job *job, const struct grade_variant *v,
 				 const struct ray *r);
 struct color grade_variant_encode(const struct grade_variant *v, struct color c);
+/* Whether the variant traces as the reference does (NULL, or a mistake
+ * made only when the colour is stored, gamma): its rays can then go
+ * through the renderer's own paths, packets included, and the colours be
+ * encoded after. */
+bool grade_variant_traces_plain(const struct grade_job *job, const struct grade_variant *v);
 
 /* Renders, for each of the n variants, the listed pixels (indices y *
  * width + x; NULL: every pixel) into imgs[i], which have the camera's

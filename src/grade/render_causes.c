@@ -37,6 +37,12 @@ struct color grade_variant_trace(const struct grade_job *job, const struct grade
 			    : render_trace(job->scene, &v->settings, r, 1, NULL);
 }
 
+bool grade_variant_traces_plain(const struct grade_job *job, const struct grade_variant *v)
+{
+	return !v || (!v->use_rules && v->settings.recursion == job->settings.recursion &&
+		      v->settings.clamp == job->settings.clamp);
+}
+
 /* The colour of pixel (x, y) as the variant renders it, as render_image
  * does: one ray through the centre (or the corner) of the pixel, or with
  * --samples N the mean of the N x N grid's clamped samples (render/

@@ -73,14 +73,16 @@ fi
 # every pixel, and the plain reference's nearest camera looks into a
 # sphere (another cause is then named: "transposed" at 48 pixels); the
 # fit made again with the reference gamma-encoded finds the camera, and
-# gamma is named.
+# gamma is named.  At 96 pixels: at 48 the camera found is off by a
+# third of a pixel, which moves two pixels of the floor's far edge, and a
+# pair (gamma and the floor reaching the horizon) then covers them.
 SAD=$ROOT/tests/data/course-files/sadathossain01.txt
-python3 "$REF" "$SAD" "$I/moved-gamma.ppm" --size 48 --mistake gamma --eye 22.6229,-176.0732,5.6145 \
+python3 "$REF" "$SAD" "$I/moved-gamma.ppm" --size 96 --mistake gamma --eye 22.6229,-176.0732,5.6145 \
 	--look 26.8829,-76.1901,7.8965 --up -0.0031,-0.0227,0.9997 --fov 62.512
-run compare -q --json -s 48 "$SAD" "$I/moved-gamma.ppm"
+run compare -q --json -s 96 "$SAD" "$I/moved-gamma.ppm"
 json moved-tone 'assert j["camera"]["moved"] is True, j["camera"]
 assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
-assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["psnr"] >= 35, j["best"]'
+assert j["best"]["causes"] == ["camera", "gamma"] and (j["best"]["psnr"] is None or j["best"]["psnr"] >= 35), j["best"]  # None: no pixel differs'
 
 # ... and the floor's tiles swapped, which turn every cell of the floor
 # the other colour: the plain fit ends at a camera that sees little of
