@@ -93,6 +93,7 @@ static void compare_json(const struct check_options *o, const struct check_refer
 	json_psnr(res->fig.psnr_gate);
 	printf(", \"left_out\": %ld", res->fig.left_out);
 	printf(", \"ties\": %ld", v->n_ties);
+	printf(", \"lenient\": %s", ref->lenient ? "true" : "false");
 	printf(", \"floor_textured\": %s", res->floor_textured ? "true" : "false");
 	printf(", \"conversion\": \"%s\"", res->truncated ? "truncate" : "round");
 	printf(", \"psnr_rounded\": ");
