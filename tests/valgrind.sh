@@ -181,6 +181,11 @@ for f in truncated.bmp truncated.ppm truncated-ascii.ppm bad-sample.ppm empty.pn
 	vg "compare $f" 1 compare -q -s 72 -j 2 "$ROOT/scenes/scene.txt" "$CI/$f"
 done
 vg "compare another size" 0 compare -q -s 40 "$ROOT/scenes/scene.txt" "$CI/ascii.ppm"
+# A file the strict reading refuses, read again by the count-driven rule
+# (the held notes), and one that neither reading takes.
+vg "compare strict refused" 3 compare -s 72 --no-camera-fit "$DATA/course-files/thr0m3l.txt" "$CI/bmp24.bmp"
+printf '1\n72\n\nsphere 0 0\n' >"$T/unread.txt"
+vg "compare unreadable scene" 1 compare -s 72 "$T/unread.txt" "$CI/bmp24.bmp"
 # The camera fit, the ties, the objects and grade's folders and zips.
 "$W" -q -s 48 --eye 30,-180,40 -o "$CI/moved.png" "$ROOT/scenes/scene.txt"
 vg "compare another camera" 0 compare -q -s 48 -j 2 --json --diff d2.png "$ROOT/scenes/scene.txt" "$CI/moved.png"

@@ -105,6 +105,77 @@ void check_view_free(struct check_view *v)
 	memset(v, 0, sizeof(*v));
 }
 
+/* The notes of a scene's reading, held until it is known which reading
+ * stands (the strict one's would repeat the other's). */
+#define CHECK_HELD_NOTES 16
+struct check_notes {
+	struct diag note[CHECK_HELD_NOTES];
+	int n, dropped;
+};
+
+static void check_hold_note(void *ctx, const struct diag *note)
+{
+	struct check_notes *h = ctx;
+
+	if (h->n < CHECK_HELD_NOTES)
+		h->note[h->n++] = *note;
+	else
+		h->dropped++;
+}
+
+static void check_print_notes(const struct check_notes *h, bool quiet)
+{
+	int i;
+
+	for (i = 0; !quiet && i < h->n; i++)
+		tool_print_diag(&h->note[i], "note");
+	if (!quiet && h->dropped > 0)
+		fprintf(stderr, "(%d more notes)\n", h->dropped);
+}
+
+/* The scene as the options say; a file the strict reading refuses (an
+ * error in the file itself) is read as the course's count-driven programs
+ * read it, which the student's program did to render the image: stop
+ * after the last section's count.  Said with the strict reading's error
+ * as a note; when that reading fails too, the error is the strict one's. */
+static int check_scene_load(struct check_options *o, struct check_reference *ref,
+			    struct camera *cam, struct diag *d)
+{
+	static struct check_notes strict_notes, lenient_notes;
+	struct diag lenient_diag;
+	int rc;
+
+	memset(&strict_notes, 0, sizeof(strict_notes));
+	ref->lenient = o->scene.read.lenient;
+	rc = cli_scene_load(&o->scene, o->scene.path, check_hold_note, &strict_notes, &ref->scene,
+			    cam, d);
+	if (rc != -RT_E_SYNTAX || !o->scene.path || o->scene.read.lenient ||
+	    strcmp(d->file, o->scene.path) != 0) {
+		check_print_notes(&strict_notes, o->scene.quiet);
+		return rc;
+	}
+	memset(&lenient_notes, 0, sizeof(lenient_notes));
+	diag_clear(&lenient_diag);
+	o->scene.read.lenient = true;
+	rc = cli_scene_load(&o->scene, o->scene.path, check_hold_note, &lenient_notes, &ref->scene,
+			    cam, &lenient_diag);
+	o->scene.read.lenient = false;
+	if (rc < 0) {
+		check_print_notes(&strict_notes, o->scene.quiet);
+		return -RT_E_SYNTAX;
+	}
+	ref->lenient = true;
+	if (!o->scene.quiet) {
+		tool_print_diag(d, "note");
+		fprintf(stderr, "%s: note: the strict reading refuses the file; read as the course's "
+				"count-driven programs read it (--lenient)\n",
+			o->scene.path);
+	}
+	check_print_notes(&lenient_notes, o->scene.quiet);
+	diag_clear(d);
+	return 0;
+}
+
 int check_reference_make(struct check_options *o, struct check_reference *ref)
 {
 	struct camera cam;
@@ -113,34 +184,7 @@ int check_reference_make(struct check_options *o, struct check_reference *ref)
 
 	memset(ref, 0, sizeof(*ref));
 	diag_clear(&d);
-	rc = cli_scene_load(&o->scene, o->scene.path, tool_print_note, &o->scene.quiet, &ref->scene,
-			    &cam, &d);
-	ref->lenient = o->scene.read.lenient;
-	/* A file the strict reading refuses is read as the course's
-	 * count-driven programs read it, which the student's program did to
-	 * render the image: stop after the last section's count.  Said with
-	 * the strict reading's error; when that reading fails too, its error
-	 * is the strict one's. */
-	if (rc == -RT_E_SYNTAX && o->scene.path && !o->scene.read.lenient) {
-		struct diag strict = d, ld;
-
-		if (!o->scene.quiet) {
-			tool_print_diag(&strict, "note");
-			fprintf(stderr, "%s: note: the strict reading refuses the file; reading it as "
-					"the course's count-driven programs do (--lenient)\n",
-				o->scene.path);
-		}
-		o->scene.read.lenient = true;
-		diag_clear(&ld);
-		rc = cli_scene_load(&o->scene, o->scene.path, tool_print_note, &o->scene.quiet,
-				    &ref->scene, &cam, &ld);
-		o->scene.read.lenient = false;
-		ref->lenient = rc == 0;
-		if (rc < 0) {
-			d = strict;
-			rc = -RT_E_SYNTAX;
-		}
-	}
+	rc = check_scene_load(o, ref, &cam, &d);
 	if (rc == 0)
 		rc = scene_prepare(ref->scene, o->threads, &d);
 	if (rc == 0) {

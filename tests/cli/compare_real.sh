@@ -201,8 +201,9 @@ run -q -s 16 -o "$T/sr35.png" "$SR/sr35-scene.txt"
 check strict-refuses eval '[ "$rc" -eq 1 ] && grep -q "sr35-scene.txt:79:5: error" "$T/err" && [ ! -e "$T/sr35.png" ]'
 run compare --no-camera-fit -s 700 "$SR/sr35-scene.txt" "$SR/sr35.png"
 check compare-falls-back eval '[ "$rc" -eq 3 ] && grep -q "sr35-scene.txt:79:5: note: expected the end of the data" "$T/err" &&
-	grep -q "note: the strict reading refuses the file; reading it as the course.s count-driven programs do" "$T/err"'
+	grep -q "note: the strict reading refuses the file; read as the course.s count-driven programs read it" "$T/err"'
 check fallback-note grep -q 'sr35-scene.txt:79: note: ignoring 12 numbers from line 79 on' "$T/err"
+check fallback-notes-once eval '[ "$(grep -c "note: read as the classic dialect" "$T/err")" -eq 1 ]'
 run compare -q --json --no-camera-fit -s 64 "$SR/sr35-scene.txt" "$SR/sr35.png"
 json fallback-json 'assert j["lenient"] is True, j.get("lenient")'
 run compare --lenient --no-camera-fit -s 700 "$SR/sr35-scene.txt" "$SR/sr35.png"
