@@ -76,6 +76,16 @@ void check_view_move(struct check_view *to, struct check_view *from);
 /* How far camera b shows what camera a shows at its pixels, in pixels
  * (the median of a grid of a's hits seen through b; check_geometry.c). */
 double check_displacement(const struct check_view *a, const struct check_view *b);
+/* The image as it is (res->fig may have judged a textured floor as the
+ * reference's) against the references at two cameras, on the same
+ * pixels: neither camera's ties (a found camera's take in every edge,
+ * where a wrong camera differs most).  With a cause (the one the fit
+ * found the camera with), its render at each camera in the reference's
+ * place: the floor's tiles swapped at the true camera are farther from
+ * the plain reference than a wrong camera's plain view can be. */
+int check_compare_cameras(const struct check_view *a, const struct check_view *b,
+			  const struct image *sub, enum grade_cause c, int form,
+			  struct grade_figures *fa, struct grade_figures *fb, struct diag *d);
 /* Whether sub's floor is textured where ref's (ids: ref's object ids) is
  * a plain checker. */
 bool check_floor_textured(const struct image *ref, const struct image *sub, const int32_t *ids);

@@ -1,10 +1,13 @@
 /* What the check reads off the pictures themselves: how far one camera's
- * view moves from another's (whether a found camera is another one), and
- * whether a submission's floor is textured where the reference's is a
- * plain checker. */
+ * view moves from another's and how near the submission comes to each
+ * (whether a found camera is another one), and whether a submission's
+ * floor is textured where the reference's is a plain checker. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
 
 #include "cli/check.h"
 
@@ -94,4 +97,49 @@ bool check_floor_textured(const struct image *ref, const struct image *sub, cons
 			dense += noisy >= 7;
 		}
 	return n >= CHECK_TEXTURE_MIN_PIXELS && (double)dense / (double)n > CHECK_TEXTURE_DENSE;
+}
+
+/* The figures of sub against the reference at view v with form `form`
+ * of cause c in its place (RT_CAUSE_NONE: the reference itself), on the
+ * pixels skip does not mark. */
+static int check_figures_with(const struct check_view *v, enum grade_cause c, int form,
+			      const struct image *sub, const uint8_t *skip,
+			      struct grade_figures *fig, struct diag *d)
+{
+	struct grade_rank r;
+	struct image img;
+	int rc;
+
+	if (c == RT_CAUSE_NONE) {
+		grade_figures_skipping(&v->image, sub, skip, fig);
+		return 0;
+	}
+	memset(&r, 0, sizeof(r));
+	r.cause = c;
+	r.form = form;
+	r.also = RT_CAUSE_NONE;
+	if ((rc = grade_cause_image(&v->job, &v->image, &r, &img, d)) < 0)
+		return rc;
+	grade_figures_skipping(&img, sub, skip, fig);
+	image_free(&img);
+	return 0;
+}
+
+int check_compare_cameras(const struct check_view *a, const struct check_view *b,
+			  const struct image *sub, enum grade_cause c, int form,
+			  struct grade_figures *fa, struct grade_figures *fb, struct diag *d)
+{
+	size_t total = (size_t)sub->width * (size_t)sub->height, i;
+	uint8_t *skip = rt_calloc(total, 1);
+	int rc;
+
+	if (!skip)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the ties");
+	for (i = 0; i < total; i++)
+		skip[i] = (a->ties && a->ties[i]) || (b->ties && b->ties[i]);
+	rc = check_figures_with(a, c, form, sub, skip, fa, d);
+	if (rc == 0)
+		rc = check_figures_with(b, c, form, sub, skip, fb, d);
+	rt_free(skip);
+	return rc;
 }

@@ -106,58 +106,6 @@ static int check_found_view(const struct check_reference *ref, const struct chec
 	return check_view_make(ref, p, v->camera.width, v->camera.height, angle, out, d);
 }
 
-/* The figures of sub against the reference at view v with form `form`
- * of cause c in its place (RT_CAUSE_NONE: the reference itself), on the
- * pixels skip does not mark. */
-static int check_figures_with(const struct check_view *v, enum grade_cause c, int form,
-			      const struct image *sub, const uint8_t *skip,
-			      struct grade_figures *fig, struct diag *d)
-{
-	struct grade_rank r;
-	struct image img;
-	int rc;
-
-	if (c == RT_CAUSE_NONE) {
-		grade_figures_skipping(&v->image, sub, skip, fig);
-		return 0;
-	}
-	memset(&r, 0, sizeof(r));
-	r.cause = c;
-	r.form = form;
-	r.also = RT_CAUSE_NONE;
-	if ((rc = grade_cause_image(&v->job, &v->image, &r, &img, d)) < 0)
-		return rc;
-	grade_figures_skipping(&img, sub, skip, fig);
-	image_free(&img);
-	return 0;
-}
-
-/* The image as it is (res->fig may have judged a textured floor as the
- * reference's) against the references at two cameras, on the same
- * pixels: neither camera's ties (a found camera's take in every edge,
- * where a wrong camera differs most).  With a cause (the one the fit
- * found the camera with), its render at each camera in the reference's
- * place: the floor's tiles swapped at the true camera are farther from
- * the plain reference than a wrong camera's plain view can be. */
-static int check_compare_cameras(const struct check_view *a, const struct check_view *b,
-				 const struct image *sub, enum grade_cause c, int form,
-				 struct grade_figures *fa, struct grade_figures *fb, struct diag *d)
-{
-	size_t total = (size_t)sub->width * (size_t)sub->height, i;
-	uint8_t *skip = rt_calloc(total, 1);
-	int rc;
-
-	if (!skip)
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the ties");
-	for (i = 0; i < total; i++)
-		skip[i] = (a->ties && a->ties[i]) || (b->ties && b->ties[i]);
-	rc = check_figures_with(a, c, form, sub, skip, fa, d);
-	if (rc == 0)
-		rc = check_figures_with(b, c, form, sub, skip, fb, d);
-	rt_free(skip);
-	return rc;
-}
-
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
