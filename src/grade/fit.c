@@ -204,6 +204,8 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 						pivot[t] = 100.0;
 				}
 			}
+			if (s == first && variant && (variant->rules & RT_RULE_FLOOR_SWAPPED))
+				fit_odd_alias(&batch, hyp[0], &evals);
 			for (k = 0; k < n_hyp && rc == 0; k++) {
 				hf[k] = fit_gn(&batch, hyp[k], hyp[k][FIT_FOV] / level.h, &pivot[k],
 					       st->iterations, &evals, d, &rc);

@@ -102,13 +102,39 @@ int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][FIT_DIM
 	return m;
 }
 
+/* A cause's floor (the tiles swapped) fits a cell off the plain one's:
+ * the eye one cell along x or y, which swaps the tiles. */
+static const int fit_odd_cells[4][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } };
+
+void fit_odd_alias(struct fit_batch *b, double *x, long *evals)
+{
+	const struct scene_view *v = scene_view_of(b->job->scene);
+	double xs[5 * FIT_DIM], fs[5], c = v->floor_cell;
+	int k, best = 0;
+
+	if (!scene_has_floor(b->job->scene) || !(c > 0.0) || !isfinite(c))
+		return;
+	for (k = 0; k < 5; k++) {
+		memcpy(xs + k * FIT_DIM, x, sizeof(double) * FIT_DIM);
+		if (k > 0) {
+			xs[k * FIT_DIM + FIT_X] += c * fit_odd_cells[k - 1][0];
+			xs[k * FIT_DIM + FIT_Y] += c * fit_odd_cells[k - 1][1];
+		}
+	}
+	fit_batch_run(b, xs, fs, 5);
+	*evals += 5;
+	for (k = 1; k < 5; k++)
+		if (fs[k] < fs[best])
+			best = k;
+	memcpy(x, xs + best * FIT_DIM, sizeof(double) * FIT_DIM);
+}
+
 /* Once the camera is sharp, the floor's aliases once more, as they are
  * (the same direction and field of view): an eye two cells off along the
  * view is what the blurred levels could not tell apart, and the sharp one
  * can by the objects.  True when x moved (to a better alias). */
 bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals)
 {
-	static const int odd[4][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { 0, -1 } };
 	const struct scene_view *v = scene_view_of(b->job->scene);
 	double xs[28 * FIT_DIM], fs[28], c = v->floor_cell;
 	int i, j, n = 0, k, best = -1;
@@ -124,12 +150,10 @@ bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals)
 			xs[n * FIT_DIM + FIT_Y] += c * (i - j);
 			n++;
 		}
-	/* A cause's floor (the tiles swapped) may fit a cell off the plain
-	 * one's: the eye one cell along x or y, which swaps the tiles. */
 	for (k = 0; b->level->variant && k < 4; k++) {
 		memcpy(xs + n * FIT_DIM, x, sizeof(double) * FIT_DIM);
-		xs[n * FIT_DIM + FIT_X] += c * odd[k][0];
-		xs[n * FIT_DIM + FIT_Y] += c * odd[k][1];
+		xs[n * FIT_DIM + FIT_X] += c * fit_odd_cells[k][0];
+		xs[n * FIT_DIM + FIT_Y] += c * fit_odd_cells[k][1];
 		n++;
 	}
 	fit_batch_run(b, xs, fs, n);

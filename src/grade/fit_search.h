@@ -51,5 +51,9 @@ int fit_floor_aliases(struct fit_batch *b, const double *x, double out[][FIT_DIM
  * one cell along x or y); x moves to the best when it is better than *fx.
  * True when it moved. */
 bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals);
+/* x or one of its eyes a cell along x or y (as they are), the best on the
+ * level, into x: where a refit with a cause's floor (the tiles swapped)
+ * starts, since the plain fit of such an image ends on that alias. */
+void fit_odd_alias(struct fit_batch *b, double *x, long *evals);
 
 #endif

@@ -95,6 +95,17 @@ json moved-tiles-pull 'assert j["camera"]["moved"] is True, j["camera"]
 assert j["first"] == ["floor-swapped"], (j["first"], j["diagnosis"])
 assert j["best"]["causes"] == ["camera", "floor-swapped"] and j["best"]["explains"], j["best"]'
 
+# ... and where the plain fit is not pulled away but lands a cell off:
+# the tiles swapped look like the plain floor from an eye one cell along
+# x (sadathossain01's big sphere keeps the rest near), so the refit with
+# the tiles swapped starts from the best of that camera and its four
+# one-cell neighbours (it drifted 20 units away from the camera found).
+python3 "$REF" "$SAD" "$I/moved-odd.ppm" --size 96 --mistake floor-swapped --eye -21.1401,-211.8981,49.0561 \
+	--look 10.2318,-118.2689,34.5167 --up -0.1231,0,0.9924 --fov 80.297
+run compare -q --json -s 96 "$SAD" "$I/moved-odd.ppm"
+json moved-tiles-odd 'assert j["first"] == ["floor-swapped"], (j["first"], j["diagnosis"])
+assert j["best"]["causes"] == ["camera", "floor-swapped"] and j["best"]["explains"], j["best"]'
+
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
 python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
@@ -206,6 +217,8 @@ check fallback-note grep -q 'sr35-scene.txt:79: note: ignoring 12 numbers from l
 check fallback-notes-once eval '[ "$(grep -c "note: read as the classic dialect" "$T/err")" -eq 1 ]'
 run compare -q --json --no-camera-fit -s 64 "$SR/sr35-scene.txt" "$SR/sr35.png"
 json fallback-json 'assert j["lenient"] is True, j.get("lenient")'
+run grade -q --no-camera-fit -s 64 --scene "$SR/sr35-scene.txt" --csv g35.csv "$SR/sr35.png"
+check grade-falls-back eval '[ "$rc" -eq 3 ] && grep -q "sr35.png\",differs," "$T/wd/g35.csv"'
 run compare --lenient --no-camera-fit -s 700 "$SR/sr35-scene.txt" "$SR/sr35.png"
 check lenient-reads eval '[ "$rc" -eq 3 ] && ! grep -q "strict reading refuses" "$T/err"'
 check lenient-note grep -q 'sr35-scene.txt:79: note: ignoring 12 numbers from line 79 on' "$T/err"
