@@ -77,7 +77,8 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 		hf[k] = INFINITY;
 	for (k = 0; k < n; k++)
 		fit_view_of(&starts[k], xs + k * FIT_DIM);
-	if ((rc = fit_coarse_search(b->job, b->level->variant, &starts[0], sub, FIT_COARSE_RADIUS, FIT_COARSE_SPACING,
+	if ((rc = fit_coarse_search(b->job, b->level->variant, &starts[0], sub, FIT_COARSE_RADIUS,
+				    FIT_COARSE_SPACING,
 				    fit_scene_centre(b->job->scene),
 				    (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs, FIT_COARSE_KEEP, d)) < 0)
 		return rc;
@@ -389,8 +390,9 @@ static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
  * filling a view 6 degrees wide); the floor's tiles swapped make the
  * floor's every cell the wrong colour, and the plain fit ends a dolly and
  * an alias away (on an-akhand, 48 units back at a field of view of 49
- * degrees instead of 70).  The later refit with a cause (grade_fit_camera_with)
- * starts from the camera found, too near to leave such a camera. */
+ * degrees instead of 70).  The later refit with a cause
+ * (grade_fit_camera_with) starts from the camera found, too near to leave
+ * such a camera. */
 #define FIT_PULLED_SCORE 50.0
 static const struct {
 	enum grade_cause cause;

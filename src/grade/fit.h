@@ -99,7 +99,8 @@ double fit_level_score(const struct fit_level *l, const struct grade_job *job,
  * searched for with gamma on); the best n_out cameras (views) and their
  * scores, best first. */
 int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
-		      const struct camera_params *start, const struct image *sub, double radius, double spacing, struct vec3 centre,
+		      const struct camera_params *start, const struct image *sub, double radius,
+		      double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d);
 /* The middle of the scene's objects (the floor and unbounded shapes
  * aside; the origin when there are none). */

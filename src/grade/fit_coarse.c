@@ -397,7 +397,8 @@ static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
 /* Long: the coarse search's two looks (the grid of eyes, then around the
  * best) and the merge of their candidates, over one work struct. */
 int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
-		      const struct camera_params *start, const struct image *sub, double radius, double spacing, struct vec3 centre,
+		      const struct camera_params *start, const struct image *sub, double radius,
+		      double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)
 {
 	struct coarse_target t;
