@@ -79,6 +79,16 @@ void fit_level_jacobian(const struct fit_level *l, const struct grade_job *job,
 			const struct camera_params *base, const double v[FIT_DIM],
 			const double h[FIT_DIM], double pivot, const struct fit_scratch *s, float *jac);
 
+/* The colours of the n rays as the fit sees them: the renderer's (packets
+ * where it uses them) for the reference and for a variant that traces as
+ * it does, the variant's own trace otherwise; the variant's encoding
+ * (gamma) on top.  The one place the fit's levels and its coarse search
+ * colour a ray. */
+struct render_job;
+struct render_tree;
+void fit_trace_rays(const struct render_job *rj, struct render_tree *tree,
+		    const struct grade_job *job, const struct grade_variant *var,
+		    const struct ray *rays, int n, struct color *col);
 /* The colours camera v sees in the level's cells, blurred, into s->cells;
  * -1 for a camera that cannot be. */
 int fit_level_render(const struct fit_level *l, const struct grade_job *job,

@@ -69,9 +69,6 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 	struct ray rays[COARSE_WIDE_PX];
 	struct color col[COARSE_WIDE_PX];
 	struct diag d;
-	const struct grade_variant *var = w->variant;
-	const bool plain = grade_variant_traces_plain(w->job, var);
-	bool packets = plain && render_packets_wanted(w->job->scene->accel) && !w->job->scene->glass;
 	int x, y;
 
 	p.look = vec3_add(e, dir);
@@ -91,17 +88,7 @@ static void coarse_wide(const struct coarse_work *w, struct vec3 e, struct vec3 
 	for (y = 0; y < n; y++) {
 		for (x = 0; x < n; x++)
 			rays[x] = camera_ray(&cam, x, y);
-		if (packets)
-			render_rays_packets(&rj, rays, n, &tree, col);
-		else if (plain)
-			for (x = 0; x < n; x++)
-				col[x] = render_trace(w->job->scene, &rj.settings, &rays[x], 1, NULL);
-		else
-			for (x = 0; x < n; x++)
-				col[x] = grade_variant_trace(w->job, var, &rays[x]);
-		if (var)
-			for (x = 0; x < n; x++)
-				col[x] = grade_variant_encode(var, col[x]);
+		fit_trace_rays(&rj, &tree, w->job, w->variant, rays, n, col);
 		for (x = 0; x < n; x++) {
 			struct color c = color_clamp(col[x]);
 			float *o = img + 3 * (y * n + x);

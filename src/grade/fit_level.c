@@ -269,6 +269,26 @@ int fit_scratch_points(struct fit_scratch *s, const struct fit_level *l, struct 
 	return 0;
 }
 
+void fit_trace_rays(const struct render_job *rj, struct render_tree *tree,
+		    const struct grade_job *job, const struct grade_variant *var,
+		    const struct ray *rays, int n, struct color *col)
+{
+	const bool plain = grade_variant_traces_plain(job, var);
+	int i;
+
+	if (plain && render_packets_wanted(job->scene->accel) && !job->scene->glass)
+		render_rays_packets(rj, rays, n, tree, col);
+	else if (plain)
+		for (i = 0; i < n; i++)
+			col[i] = render_trace(job->scene, &rj->settings, &rays[i], 1, NULL);
+	else
+		for (i = 0; i < n; i++)
+			col[i] = grade_variant_trace(job, var, &rays[i]);
+	if (var)
+		for (i = 0; i < n; i++)
+			col[i] = grade_variant_encode(var, col[i]);
+}
+
 /* The rays a level's cells are made of, RT_FIT_RAYS at a time.
  * Long: the level's rays made, traced and summed into cells in batches, the
  * three sharing the batch's arrays. */
@@ -288,9 +308,6 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 	struct ray rays[FIT_RAYS];
 	struct color col[FIT_RAYS];
 	struct diag d;
-	const struct grade_variant *var = l->variant;
-	const bool plain = grade_variant_traces_plain(job, var);
-	bool packets = plain && render_packets_wanted(job->scene->accel) && !job->scene->glass;
 	int k, i, m;
 
 	if (!(v[FIT_FOV] > 1.0 && v[FIT_FOV] < 170.0) || !(fabs(v[FIT_PITCH]) < 89.0))
@@ -311,17 +328,7 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 		m = l->n_samples - k < FIT_RAYS ? l->n_samples - k : FIT_RAYS;
 		for (i = 0; i < m; i++)
 			rays[i] = camera_ray(&cam, l->sx[k + i], l->sy[k + i]);
-		if (packets)
-			render_rays_packets(&rj, rays, m, &tree, col);
-		else if (plain)
-			for (i = 0; i < m; i++)
-				col[i] = render_trace(job->scene, &rj.settings, &rays[i], 1, NULL);
-		else
-			for (i = 0; i < m; i++)
-				col[i] = grade_variant_trace(job, var, &rays[i]);
-		if (var)
-			for (i = 0; i < m; i++)
-				col[i] = grade_variant_encode(var, col[i]);
+		fit_trace_rays(&rj, &tree, job, l->variant, rays, m, col);
 		for (i = 0; i < m; i++) {
 			float *c = s->cells + 3 * ((k + i) / per);
 			struct color q = color_clamp(col[i]);
