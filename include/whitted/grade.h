@@ -159,6 +159,9 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 int grade_cause_image(const struct grade_job *job, const struct image *ref,
 		      const struct grade_rank *r, struct image *out, struct diag *d);
 
+/* The camera fit's levels of the image, coarse to fine. */
+#define GRADE_FIT_LEVELS 7
+
 /* The camera found from an image (grade_fit_camera). */
 struct grade_fit {
 	struct camera_params camera;	/* the camera found */
@@ -172,6 +175,11 @@ struct grade_fit {
 					 * reference for the camera found, or
 					 * RT_CAUSE_NONE (the plain reference) */
 	int form;			/* its form */
+	double levels[GRADE_FIT_LEVELS];	/* the best score on each level
+					 * in the search from the starts
+					 * (INFINITY where it did not go); of
+					 * grade_fit_camera, the plain
+					 * reference's: a refit's bound */
 };
 
 /* Finds the camera that took sub, whose size the job's camera has: the
@@ -189,12 +197,15 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 /* The camera refined from start on the fit's finer levels with form
  * `form` of cause c rendered in place of the reference: a camera and a
  * shading mistake at once (the mistake pulls a fit of the plain
- * reference away).  -RT_E_INVALID for a transform, a form the cause
- * does not have, or one the fit cannot render (rays through the pixels'
- * corners, bytes that wrap).  Deterministic as grade_fit_camera. */
+ * reference away).  Abandoned (score INFINITY) on the first level where
+ * it comes farther from sub than bound's levels say the plain reference
+ * came (bound NULL: never): such a cause explains less than no cause.
+ * -RT_E_INVALID for a transform, a form the cause does not have, or one
+ * the fit cannot render (rays through the pixels' corners, bytes that
+ * wrap).  Deterministic as grade_fit_camera. */
 int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,
 			  enum grade_cause cause, int form, const struct image *sub,
-			  struct grade_fit *out, struct diag *d);
+			  const struct grade_fit *bound, struct grade_fit *out, struct diag *d);
 
 /* The nearest hit of a ray in the job's scene, at *t (t in (0, *t)). */
 bool grade_primary_hit(const struct grade_job *job, const struct ray *r, double *t);

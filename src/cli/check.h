@@ -118,6 +118,8 @@ struct check_result {
 	struct check_view found;	/* at the camera found (when moved) */
 	struct grade_figures fig_found;	/* against the reference there */
 	long fit_evals;
+	struct grade_fit fit;		/* the fit (when fitted): its levels bound
+					 * the refits with a cause */
 	/* The causes, at the camera of the explanation (found when moved). */
 	struct grade_rank ranks[GRADE_MAX_RANKS];
 	size_t n_ranks;

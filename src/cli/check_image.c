@@ -128,6 +128,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 	if ((rc = grade_fit_camera(&v->job, starts, n, &res->image, &fit, d)) < 0)
 		return rc;
 	res->fitted = true;
+	res->fit = fit;
 	res->fit_evals = fit.evals;
 	if ((rc = check_found_view(ref, v, &fit.camera, &res->found, d)) < 0)
 		return rc;
@@ -278,14 +279,17 @@ static int check_refit(struct check_reference *ref, const struct check_view *giv
 		struct camera cam;
 		struct image img;
 
-		if ((rc = grade_fit_camera_with(&res->found.job, &res->found.params, causes[k], forms[k],
-						&res->image, &fit, d)) == -RT_E_INVALID) {
+		rc = grade_fit_camera_with(&res->found.job, &res->found.params, causes[k], forms[k],
+					   &res->image, &res->fit, &fit, d);
+		if (rc == -RT_E_INVALID) {
 			diag_clear(d);
 			continue;
 		}
 		if (rc < 0)
 			return rc;
 		res->fit_evals += fit.evals;
+		if (isinf(fit.score))
+			continue;	/* farther than no cause: abandoned */
 		if ((rc = camera_init_rect(&cam, &fit.camera, given->camera.width, given->camera.height, d)) < 0)
 			return rc;
 		job.camera = &cam;

@@ -365,15 +365,42 @@ static void test_fit_level_with_a_cause(void **state)
 
 	/* From the true camera the fit with the cause stays there. */
 	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_NO_SHADOWS, 0, &shadowless,
-					       &fit, &d), 0);
+					       NULL, &fit, &d), 0);
 	assert_true(fit.score < 0.5);
 	assert_vec3_near(fit.camera.eye, s.params.eye, 0.5);
+	/* Bounded by a plain fit's levels: kept when it comes nearer on
+	 * every level, abandoned (score infinite, no camera) on the first
+	 * where it is farther. */
+	{
+		struct grade_fit bound, again;
+		int k, last;
+		for (k = 0; k < GRADE_FIT_LEVELS; k++)
+			bound.levels[k] = 1.0;
+		assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_NO_SHADOWS, 0,
+						       &shadowless, &bound, &again, &d), 0);
+		assert_true(again.score == fit.score);
+		assert_true(again.levels[2] < 1.0 && again.levels[GRADE_FIT_LEVELS - 1] < 1.0);
+		assert_true(isinf(again.levels[0]) && isinf(again.levels[1]));
+		for (k = 0; k < GRADE_FIT_LEVELS; k++)
+			bound.levels[k] = k < 3 ? INFINITY : 0.0;
+		assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_NO_SHADOWS, 0,
+						       &shadowless, &bound, &again, &d), 0);
+		assert_true(isinf(again.score));
+		/* Its last level (a 60-pixel image skips the levels finer
+		 * than it whose blur does not shrink) is the first bounded
+		 * one it reached; the finer ones were not tried. */
+		for (last = GRADE_FIT_LEVELS - 1; last >= 0 && isinf(again.levels[last]); last--)
+			;
+		assert_true(last >= 3 && last < GRADE_FIT_LEVELS - 1 && again.levels[last] > 0.0);
+		for (k = 3; k < last; k++)
+			assert_true(isinf(again.levels[k]));
+	}
 	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_MIRRORED, 0, &shadowless,
-					       &fit, &d), -RT_E_INVALID);
+					       NULL, &fit, &d), -RT_E_INVALID);
 	assert_true(strstr(d.msg, "form") != NULL);
 	/* Rays through the pixels' corners: not what the fit's levels render. */
 	assert_int_equal(grade_fit_camera_with(&s.job, &s.params, RT_CAUSE_PIXEL_CORNERS, 0, &shadowless,
-					       &fit, &d), -RT_E_INVALID);
+					       NULL, &fit, &d), -RT_E_INVALID);
 	image_free(&shadowless);
 	setup_free(&s);
 }
