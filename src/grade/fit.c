@@ -51,16 +51,11 @@ static const struct fit_stage fit_stages[GRADE_FIT_LEVELS] = {
  * level, against the given camera's score there). */
 static const struct fit_stage fit_polish_stage = { 384, 1, 0.5, 3 };
 
-/* A pass's best score on each level is kept (struct grade_fit's levels),
- * and a pass given the plain pass's levels as its bound is abandoned on
- * the first level from FIT_GUARD_FIRST_STAGE on where its best is
- * farther.  Each level is of the submission, so two passes' scores on it
- * compare; a mistake rendered in the reference's place that explains the
- * image comes nearer than the plain reference on the blurred levels
- * already (an-akhand's tiles swapped: 1.66 against 148.9 on the last),
- * and a pass that does not was, on an image nothing explains, a third
- * of the time of a compare (sr20, 700 pixels: the two pulled passes,
- * 35 s of 115). */
+/* A pass given the plain pass's levels (struct grade_fit) as its bound
+ * stops on the first level from this one on where its best is farther:
+ * the levels are the submission's, so the scores compare, and a mistake
+ * that explains the image beats the plain reference there already.  On
+ * images nothing explains, such passes were a third of compare's time. */
 #define FIT_GUARD_FIRST_STAGE 1
 
 /* The hypotheses the first stages carry: the stage-0 refinements of the
