@@ -432,7 +432,7 @@ static int fit_passes(const struct grade_job *job, const struct camera_params *s
 	 * guess; a second from where it ended, with one hypothesis, often
 	 * finds the camera that alias hid (the same last level: the scores
 	 * compare). */
-	if (rc < 0 || isinf(out->score))
+	if (rc < 0 || (bound && isinf(out->score)))
 		return rc;	/* failed, or abandoned by the guard */
 	if (out->score > FIT_SETTLED_SCORE) {
 		if ((rc = fit_run(job, &out->camera, 1, sub, variant, FIT_REFIT_FIRST_STAGE, NULL,
@@ -496,5 +496,5 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 		     out, d);
 	out->cause = cause;
 	out->form = form;
-	return rc < 0 || isinf(out->score) ? rc : fit_polish(job, start, sub, &v, out, d);
+	return rc < 0 || (bound && isinf(out->score)) ? rc : fit_polish(job, start, sub, &v, out, d);
 }
