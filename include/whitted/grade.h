@@ -69,6 +69,7 @@ enum grade_cause {
 	RT_CAUSE_FLOOR_CELL,		/* the checker's cells of another size */
 	RT_CAUSE_CHECKER_PHASE,		/* the cells counted from another origin */
 	RT_CAUSE_FLOOR_PLACE,		/* the floor with a corner at the origin */
+	RT_CAUSE_SPOT_CONE,		/* a spotlight's cone of another width, or none */
 	RT_CAUSE_COUNT
 };
 

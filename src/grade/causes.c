@@ -16,6 +16,7 @@ static const struct grade_cause_row {
 	struct grade_cause_text text;
 	unsigned map;		/* GRADE_MAP_*: a transform of the reference; 0 for a render */
 	unsigned rule;		/* RT_RULE_*: the rule it breaks, rendered; 0 for none */
+	unsigned floor;		/* GRADE_FLOOR_*: the parts of the floor it changes */
 } grade_causes[RT_CAUSE_COUNT] = {
 	[RT_CAUSE_MIRRORED] = { .text = { "mirrored", "the image mirrored left-right",
 		"the camera's right vector has the wrong sign: right = forward x up, and pixel i "
@@ -71,18 +72,27 @@ static const struct grade_cause_row {
 		"while level < it, the primary ray at level 1" } },
 	[RT_CAUSE_FLOOR_HORIZON] = { .text = { "floor-horizon", "the floor reaching the horizon",
 		"the floor is a square of the file's width centred on the origin (|x|, |y| < "
-		"width / 2): a ray that meets z = 0 outside it hits no floor" } },
+		"width / 2): a ray that meets z = 0 outside it hits no floor" },
+		.floor = GRADE_FLOOR_HALF },
 	[RT_CAUSE_FLOOR_SIZE] = { .text = { "floor-size", "the floor of another width",
 		"make the floor the dialect's width (1000; --floor WIDTH,TILE when the assignment "
-		"says otherwise)" } },
+		"says otherwise)" },
+		.floor = GRADE_FLOOR_HALF | GRADE_FLOOR_ORIGIN },
 	[RT_CAUSE_FLOOR_CELL] = { .text = { "floor-cell", "the checker's cells of another size",
 		"make the cells the dialect's width (20 classic and spot, 30 pyramid, the header's "
-		"CELL in nearfar)" } },
+		"CELL in nearfar)" },
+		.floor = GRADE_FLOOR_CELL },
 	[RT_CAUSE_FLOOR_PLACE] = { .text = { "floor-place", "the floor with a corner at the origin",
-		"centre the floor on the origin: it covers -width / 2 <= x, y < width / 2" } },
+		"centre the floor on the origin: it covers -width / 2 <= x, y < width / 2" },
+		.floor = GRADE_FLOOR_CENTRE | GRADE_FLOOR_ORIGIN },
 	[RT_CAUSE_CHECKER_PHASE] = { .text = { "checker-phase", "the checker's cells counted from another origin",
 		"count the cells from the floor's corner: i = floor((x + width / 2) / cell), j "
-		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" } },
+		"likewise (nearfar's endless floor: from the origin, i = floor(x / cell))" },
+		.floor = GRADE_FLOOR_ORIGIN },
+	[RT_CAUSE_SPOT_CONE] = { .text = { "spot-cone", "the spotlights' cone of another width",
+		"light P only when the angle between P - position and the axis is at most the "
+		"cutoff, in degrees: cos(angle) >= cos(cutoff * pi / 180), with pi in parentheses "
+		"if it is a macro" } },
 };
 
 static const struct grade_cause_text grade_clamp_level_text = {
@@ -139,8 +149,31 @@ static bool grade_scene_floor(const struct grade_job *job, double *half, double 
 	return true;
 }
 
-static const double grade_width_factors[] = { 0.5, 2.0, 3.0, 5.0 };
+static const double grade_width_factors[] = { 0.4, 0.5, 2.0, 3.0, 5.0 };
 static const double grade_cells[] = { 10.0, 15.0, 20.0, 25.0, 30.0, 40.0, 50.0 };
+
+/* The spotlights' cones as students get them wrong (RT_CAUSE_SPOT_CONE's
+ * forms): cos() of the degrees, no cone at all, the cutoff as the full
+ * angle, the angle through `#define PI 2*acos(0.0)` (a cone pi^2 / 4
+ * times narrower), no spotlights. */
+static const unsigned grade_spot_rules[] = {
+	RT_RULE_SPOT_COS_DEGREES, RT_RULE_SPOT_NO_CONE, RT_RULE_SPOT_FULL_ANGLE,
+	RT_RULE_SPOT_PI_MACRO, RT_RULE_SPOT_UNLIT,
+};
+static const char *const grade_spot_details[] = {
+	"cos(cutoff) of the degrees", "no cone: lit every way", "the cutoff as the full angle",
+	"PI a macro without parentheses: 2.47 times narrower", "the spotlights left out",
+};
+
+static bool grade_has_spotlight(const struct grade_job *job)
+{
+	size_t i;
+
+	for (i = 0; i < job->scene->n_lights; i++)
+		if (job->scene->lights[i].spot)
+			return true;
+	return false;
+}
 
 /* The other floor of a floor cause's form; false for no such form. */
 static bool grade_floor_form(const struct grade_job *job, enum grade_cause c, int form,
@@ -274,7 +307,15 @@ bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 	case RT_CAUSE_CHECKER_PHASE:
 		v->use_rules = true;
 		v->other_floor = true;
+		v->floor_changes = grade_causes[c].floor;
 		return grade_floor_form(job, c, form, &v->floor);
+	case RT_CAUSE_SPOT_CONE:
+		if (form >= (int)(sizeof(grade_spot_rules) / sizeof(grade_spot_rules[0])) ||
+		    !grade_has_spotlight(job))
+			return false;
+		v->rules = grade_spot_rules[form];
+		v->use_rules = true;
+		return true;
 	default:
 		return form == 0;
 	}
@@ -286,7 +327,7 @@ bool grade_variant_combine(const struct grade_variant *a, const struct grade_var
 	const struct render_settings *base = &a->settings;
 
 	*out = *a;
-	if ((a->other_floor && b->other_floor) || (a->corner && b->corner) || (a->gamma && b->gamma) ||
+	if ((a->floor_changes & b->floor_changes) || (a->corner && b->corner) || (a->gamma && b->gamma) ||
 	    (a->wrap && b->wrap) || (a->map & b->map) || ((a->rules & b->rules) != 0))
 		return false;
 	out->rules |= b->rules;
@@ -299,9 +340,25 @@ bool grade_variant_combine(const struct grade_variant *a, const struct grade_var
 		out->cx = b->cx;
 		out->cy = b->cy;
 	}
-	if (b->other_floor) {
+	if (b->other_floor && !a->other_floor) {
 		out->other_floor = true;
 		out->floor = b->floor;
+		out->floor_changes = b->floor_changes;
+	} else if (b->other_floor) {
+		/* b's parts of the floor over a's (both made from the scene's). */
+		out->floor_changes |= b->floor_changes;
+		if (b->floor_changes & GRADE_FLOOR_HALF)
+			out->floor.half = b->floor.half;
+		if (b->floor_changes & GRADE_FLOOR_CELL)
+			out->floor.cell = b->floor.cell;
+		if (b->floor_changes & GRADE_FLOOR_ORIGIN) {
+			out->floor.ox = b->floor.ox;
+			out->floor.oy = b->floor.oy;
+		}
+		if (b->floor_changes & GRADE_FLOOR_CENTRE) {
+			out->floor.cx = b->floor.cx;
+			out->floor.cy = b->floor.cy;
+		}
 	}
 	/* b's settings where they are not the plain ones (the caller
 	 * combines only forms of one job). */
@@ -348,6 +405,9 @@ void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int for
 	case RT_CAUSE_FLOOR_PLACE:
 		snprintf(buf, size, "x from %g to %g, y from %g to %g", v.floor.cx - v.floor.half,
 			 v.floor.cx + v.floor.half, v.floor.cy - v.floor.half, v.floor.cy + v.floor.half);
+		break;
+	case RT_CAUSE_SPOT_CONE:
+		snprintf(buf, size, "%s", grade_spot_details[form]);
 		break;
 	case RT_CAUSE_CHECKER_PHASE:
 		snprintf(buf, size, form == 0 ? "from the origin" : form == 1

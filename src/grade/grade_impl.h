@@ -29,8 +29,19 @@ struct grade_variant {
 	double cx, cy;
 	bool other_floor;		/* floor in place of the scene's */
 	struct shade_floor floor;
+	unsigned floor_changes;		/* GRADE_FLOOR_*: what floor changes of the scene's */
 	int gamma;			/* 0 none, 1 the sRGB curve, 2 c^(1/2.2) */
 	unsigned map;			/* enum grade_map */
+};
+
+/* The parts of the scene's floor a floor cause changes: two causes that
+ * change different parts make one floor (a student's floor can be both
+ * narrower and of smaller cells). */
+enum grade_floor_change {
+	GRADE_FLOOR_HALF = 1u << 0,	/* its width */
+	GRADE_FLOOR_CELL = 1u << 1,	/* its cells' size */
+	GRADE_FLOOR_ORIGIN = 1u << 2,	/* where the cells are counted from */
+	GRADE_FLOOR_CENTRE = 1u << 3,	/* where it lies */
 };
 
 /* The most forms a cause has. */

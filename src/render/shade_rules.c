@@ -32,6 +32,32 @@ static bool rules_shadowed(const struct scene *s, unsigned rules, struct vec3 p,
 	return accel_occluded(s->accel, &shadow, eps, dist - eps);
 }
 
+/* Whether spotlight lt lights along l (unit, from P to the light) as the
+ * rules' cone says: the contract's test, cos(angle) >= cos(cutoff), when
+ * no spot rule is broken. */
+static bool rules_spot_lights(const struct light *lt, unsigned rules, struct vec3 l)
+{
+	const double pi = 3.14159265358979323846;
+	double c = -vec3_dot(l, lt->axis), angle;
+
+	switch (rules & RT_RULE_SPOT_MASK) {
+	case RT_RULE_SPOT_UNLIT:
+		return false;
+	case RT_RULE_SPOT_NO_CONE:
+		return true;
+	case RT_RULE_SPOT_COS_DEGREES:
+		return c >= cos(lt->cutoff_deg);
+	case RT_RULE_SPOT_FULL_ANGLE:
+		return c >= cos(lt->cutoff_deg * pi / 360.0);
+	case RT_RULE_SPOT_PI_MACRO:
+		/* acos(c) * 180 / PI with PI `2*acos(0.0)`: acos(c) * 90 * pi / 2. */
+		angle = acos(c < -1.0 ? -1.0 : c > 1.0 ? 1.0 : c) * 180.0 / 2.0 * (pi / 2.0);
+		return angle <= lt->cutoff_deg;
+	default:
+		return c >= lt->cos_cutoff;
+	}
+}
+
 /* spec: NULL, or the highlight's colour where it is not the surface's (a
  * textured floor's cell under its texel), as in shade.c. */
 static struct color rules_direct(const struct scene *s, unsigned rules, const struct material *m,
@@ -52,7 +78,7 @@ static struct color rules_direct(const struct scene *s, unsigned rules, const st
 		nl = vec3_dot(n, l);
 		if (nl <= 0.0 && !(rules & RT_RULE_LIGHT_BEHIND))
 			continue;
-		if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
+		if (lt->spot && !rules_spot_lights(lt, rules, l))
 			continue;
 		if (rules_shadowed(s, rules, p, l, dist, eps))
 			continue;

@@ -24,7 +24,16 @@ enum shade_rule {
 	RT_RULE_TWO_SIDED = 1u << 6,		/* with LIGHT_BEHIND: diffuse kd |N.L| */
 	RT_RULE_SIGNED_DIFFUSE = 1u << 7,	/* with LIGHT_BEHIND: diffuse kd N.L, signed (a
 						 * light behind darkens) */
+	/* A spotlight's cone, each a way students get it wrong (at most one): */
+	RT_RULE_SPOT_COS_DEGREES = 1u << 8,	/* cos(cutoff) of the degrees as radians */
+	RT_RULE_SPOT_NO_CONE = 1u << 9,		/* lit every way, as a point light */
+	RT_RULE_SPOT_FULL_ANGLE = 1u << 10,	/* the cutoff taken as the cone's full angle */
+	RT_RULE_SPOT_PI_MACRO = 1u << 11,	/* the angle in degrees through an unbracketed
+						 * PI macro: rad * 180 / 2 * acos(0) */
+	RT_RULE_SPOT_UNLIT = 1u << 12,		/* spotlights left out */
 };
+#define RT_RULE_SPOT_MASK (RT_RULE_SPOT_COS_DEGREES | RT_RULE_SPOT_NO_CONE | \
+			   RT_RULE_SPOT_FULL_ANGLE | RT_RULE_SPOT_PI_MACRO | RT_RULE_SPOT_UNLIT)
 
 /* render_trace with the rules in `rules` broken (0: the contract, the same
  * colour as render_trace).  For RT_RULE_NEVER_CLAMP a primary ray's colour

@@ -19,7 +19,10 @@ Besides whitted's own definitions of the causes, forms written apart from
 them (after the review's student-style renderer): light-behind with the
 diffuse term signed (no N.L test at all), gamma as the sRGB curve on the
 float, the image written by truncating 255 c (correct: it must match) and
-the wrap of the truncated byte (no-clamp).  A symmetric course scene
+the wrap of the truncated byte (no-clamp); and on the scenes with
+spotlights, five ways of getting the cone wrong (cos() of the degrees, no
+cone, the cutoff as the full angle, an unbracketed PI macro, no
+spotlights), each to be named spot-cone.  A symmetric course scene
 (sadathossain01: mirrored and floor-swapped can be the same image) counts
 a cause as named when it is among those ranked first equally.
 
@@ -47,6 +50,11 @@ RENDERS = ['gamma', 'white-highlight', 'no-shadows', 'light-behind', 'recursion-
 INDEPENDENT = [('light-behind-signed', ['--mistake', 'light-behind-signed'], 'light-behind'),
                ('gamma-srgb', ['--mistake', 'gamma-srgb'], 'gamma'),
                ('no-clamp-truncated', ['--mistake', 'no-clamp', '--truncate'], 'no-clamp')]
+# A spotlight's cone as students get it wrong, each named spot-cone; made
+# only of the scenes with spotlights (SPOT_SCENES).
+SPOT_MISTAKES = ['spot-cos-degrees', 'spot-no-cone', 'spot-full-angle', 'spot-pi-macro',
+                 'spot-unlit']
+SPOT_SCENES = ('spot.txt', 'nearfar.txt', 'munzer2.txt', 'akib1689.txt', 'sadathossain01.txt')
 # The large BMP case: fewer mistakes, each a slow Python render.
 LARGE = ('scene.txt', 201, TRANSFORMS + ['white-highlight', 'no-shadows'])
 
@@ -162,6 +170,8 @@ def one_scene(job):
                                                          'match' if ok else (err or j['verdict'])))
     todo = [(m, None, m) for m in mistakes]
     todo += [(c, opts, want) for c, opts, want in INDEPENDENT if ext == '.ppm']
+    if ext == '.ppm' and os.path.basename(scene) in SPOT_SCENES:
+        todo += [(c, ['--mistake', c], 'spot-cone') for c in SPOT_MISTAKES]
     for case, opts, want in todo:
         path = '%s-%s%s' % (base, case, ext)
         if case in TRANSFORMS or case in converted:
@@ -215,7 +225,7 @@ def main():
             per_cause[m] = (r + named, t + 1)
     print('per cause: ' + ', '.join('%s %d/%d' % (m, r, t) for m, (r, t) in sorted(per_cause.items())))
     share = right / total if total else 0.0
-    missing = [m for m in TRANSFORMS + RENDERS + [c for c, _, _ in INDEPENDENT]
+    missing = [m for m in TRANSFORMS + RENDERS + [c for c, _, _ in INDEPENDENT] + SPOT_MISTAKES
                if m not in per_cause]
     print('mistakes_check: first cause right in %d of %d cases (%.1f%%; %d of them said to '
           'explain the image within the gate); correct renders %s'

@@ -18,7 +18,11 @@ white-highlight (specular not times the colour), no-shadows, light-behind
 recursion-fewer, recursion-more, clamp-final (the other clamping),
 no-clamp (never clamped; the byte keeps the low 8 bits), pixel-corners
 (rays through the top-left corners), unit-offset (shadow and reflected rays
-start at P + 1 * direction), floor-swapped (white where i + j is odd).
+start at P + 1 * direction), floor-swapped (white where i + j is odd),
+and a spotlight's cone as students get it wrong: spot-cos-degrees
+(cos(cutoff) of the degrees), spot-no-cone (lit every way), spot-full-angle
+(the cutoff taken as the full angle), spot-pi-macro (`#define PI
+2*acos(0.0)` without parentheses, expanded), spot-unlit (no spotlights).
 Forms written apart from whitted's own definitions of the causes (by the
 review's student-style renderer): light-behind-signed (no N.L test at all:
 diffuse kd N.L signed, a light behind darkens), gamma-srgb (the sRGB curve
@@ -465,11 +469,24 @@ def nearest(objs, org, d):
 
 
 def in_cone(light, p):
-    """The angle between p - position and the axis is at most the cutoff."""
+    """The angle between p - position and the axis is at most the cutoff
+    (or, with a spot-* mistake, what a student's cone test says)."""
     if light['cutoff'] is None:
+        return True
+    if MISTAKE == 'spot-unlit':
+        return False
+    if MISTAKE == 'spot-no-cone':
         return True
     v, a = unit(sub(p, light['pos'])), unit(light['axis'])
     cosine = max(-1.0, min(1.0, dot(v, a)))
+    if MISTAKE == 'spot-cos-degrees':
+        return cosine >= math.cos(light['cutoff'])      # cos() given degrees
+    if MISTAKE == 'spot-full-angle':
+        return math.degrees(math.acos(cosine)) <= light['cutoff'] / 2
+    if MISTAKE == 'spot-pi-macro':
+        # acos(c) * 180 / PI with `#define PI 2*acos(0.0)`, expanded as
+        # the C preprocessor does: acos(c) * 180 / 2 * acos(0.0).
+        return math.acos(cosine) * 180 / 2 * math.acos(0.0) <= light['cutoff']
     return math.degrees(math.acos(cosine)) <= light['cutoff']
 
 

@@ -60,11 +60,16 @@ static void test_causes_forms(void **state)
 	 * swap colours (form 0 exists); half a cell off (1, 2) too. */
 	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_HORIZON, 0, &v));
 	assert_true(v.other_floor && isinf(v.floor.half) && v.floor.cell == 20.0);
-	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_SIZE, 1, &v));
+	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_SIZE, 2, &v));
 	assert_near(v.floor.half, 1000.0, 0.0);
 	assert_near(v.floor.ox, -1000.0, 0.0);
-	grade_cause_detail(&j.job, RT_CAUSE_FLOOR_SIZE, 1, buf, sizeof(buf));
+	grade_cause_detail(&j.job, RT_CAUSE_FLOOR_SIZE, 2, buf, sizeof(buf));
 	assert_string_equal(buf, "2000 wide instead of 1000");
+	grade_cause_detail(&j.job, RT_CAUSE_FLOOR_SIZE, 0, buf, sizeof(buf));
+	assert_string_equal(buf, "400 wide instead of 1000");
+	/* No spotlight in the course scene: no spot-cone. */
+	for (f = 0; f < GRADE_VARIANTS; f++)
+		assert_false(grade_variant_of(&j.job, RT_CAUSE_SPOT_CONE, f, &v));
 	/* No form that is the floor's own cell. */
 	for (f = 0; f < GRADE_VARIANTS; f++)
 		if (grade_variant_of(&j.job, RT_CAUSE_FLOOR_CELL, f, &v))
@@ -99,11 +104,55 @@ static void test_causes_combine(void **state)
 	/* Two levels, two floors, two rules of one bit: no pair. */
 	assert_true(grade_variant_of(&j.job, RT_CAUSE_RECURSION_MORE, 0, &a));
 	assert_true(grade_variant_combine(&a, &b, &c));	/* b's level wins */
+	/* Two floor causes that change different parts make one floor
+	 * (endless with cells 10; 400 wide from its own corner with cells
+	 * 10); two that change one part (the width, the cells' origin) do
+	 * not combine. */
 	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_HORIZON, 0, &a));
 	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_CELL, 0, &b));
+	assert_true(grade_variant_combine(&a, &b, &c));
+	assert_true(c.other_floor && isinf(c.floor.half) && c.floor.cell == 10.0 &&
+		    c.floor.ox == -500.0);
+	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_SIZE, 0, &a));
+	assert_true(grade_variant_combine(&b, &a, &c));
+	assert_true(c.floor.half == 200.0 && c.floor.cell == 10.0 && c.floor.ox == -200.0 &&
+		    c.floor.oy == -200.0 && c.floor.cx == 0.0);
+	assert_true(grade_variant_of(&j.job, RT_CAUSE_FLOOR_HORIZON, 0, &b));
+	assert_false(grade_variant_combine(&a, &b, &c));
+	assert_true(grade_variant_of(&j.job, RT_CAUSE_CHECKER_PHASE, 1, &b));
 	assert_false(grade_variant_combine(&a, &b, &c));
 	assert_true(grade_variant_of(&j.job, RT_CAUSE_LIGHT_BEHIND, 1, &a));
 	assert_false(grade_variant_combine(&a, &a, &c));
+	scene_destroy(j.s);
+}
+
+/* A spot scene's five cones, each one rule, named in its detail. */
+static void test_causes_spot_cone(void **state)
+{
+	static const unsigned rules[] = { RT_RULE_SPOT_COS_DEGREES, RT_RULE_SPOT_NO_CONE,
+					  RT_RULE_SPOT_FULL_ANGLE, RT_RULE_SPOT_PI_MACRO,
+					  RT_RULE_SPOT_UNLIT };
+	struct job_setup j;
+	struct grade_variant v;
+	struct diag d;
+	char buf[128];
+	int f;
+
+	(void)state;
+	job_make(&j, 32, true);
+	scene_destroy(j.s);
+	j.s = support_parse("1\n8\n1\nsphere\n0 0 0\n1\n1 1 1\n0.1 0.3 0.4 0\n2\n1\n0 10 0\n"
+			    "1 1 1\n1\n0 -10 0\n1 1 1\n0 1 0\n30\n");
+	assert_int_equal(scene_prepare(j.s, 1, &d), 0);
+	j.job.scene = j.s;
+	for (f = 0; f < 5; f++) {
+		assert_true(grade_variant_of(&j.job, RT_CAUSE_SPOT_CONE, f, &v));
+		assert_true(v.use_rules);
+		assert_int_equal(v.rules, rules[f]);
+	}
+	assert_false(grade_variant_of(&j.job, RT_CAUSE_SPOT_CONE, 5, &v));
+	grade_cause_detail(&j.job, RT_CAUSE_SPOT_CONE, 3, buf, sizeof(buf));
+	assert_string_equal(buf, "PI a macro without parentheses: 2.47 times narrower");
 	scene_destroy(j.s);
 }
 
@@ -151,6 +200,7 @@ int main(int argc, char **argv)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(test_causes_forms),
 		cmocka_unit_test(test_causes_combine),
+		cmocka_unit_test(test_causes_spot_cone),
 		cmocka_unit_test(test_causes_other_floor_in_the_trace),
 	};
 

@@ -4,6 +4,7 @@
  * floors at recursion 6; each rule broken, single rays through tiny scenes
  * against values computed by hand from the rule as the cause states it. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "course_scene.h"
@@ -252,6 +253,60 @@ static void test_shade_rules_floor_swapped(void **state)
 	assert_color(trace(t, RT_RULE_FLOOR_SWAPPED, r, true), 0.0, 0.0, 0.0);
 }
 
+/* A spotlight at (0, -10, 0) with a cone of 30 degrees lighting the
+ * origin of the plane y = 0, seen head on from (0, -3, 0): N.L = R.L = 1,
+ * lit ka C + (kd + ks) C = 0.8 C, unlit ka C = 0.1 C (the point light
+ * behind the plane never lights it).  axis_deg is the angle between the
+ * cone's axis and the direction to P. */
+static const char *spot_text(double axis_deg, char *buf, size_t size)
+{
+	const double a = axis_deg * 3.14159265358979323846 / 180.0;
+
+	snprintf(buf, size, "1\n8\n1\ntriangle\n-50 0 -50\n50 0 -50\n0 0 50\n0.5 0.2 0.1\n"
+		 "0.1 0.3 0.4 0\n2\n1\n0 10 0\n1 1 1\n1\n0 -10 0\n1 1 1\n%.17g %.17g 0\n30\n",
+		 sin(a), cos(a));
+	return buf;
+}
+
+static void assert_spot_lit(const char *t, unsigned rules, bool lit)
+{
+	const double k = lit ? 0.8 : 0.1;
+
+	assert_color(trace(t, rules, support_ray(0, -3, 0, 0, 1, 0), false), k * 0.5, k * 0.2,
+		     k * 0.1);
+}
+
+static void test_shade_rules_spot_cone(void **state)
+{
+	char buf[512];
+	const char *t = spot_text(20.0, buf, sizeof(buf));
+
+	(void)state;
+	/* 20 degrees off the axis: inside the cone of 30. */
+	assert_spot_lit(t, 0, true);
+	assert_spot_lit(t, RT_RULE_SPOT_NO_CONE, true);
+	assert_spot_lit(t, RT_RULE_SPOT_UNLIT, false);
+	/* cos(30 radians) = 0.154: a cone of 81.1 degrees. */
+	assert_spot_lit(t, RT_RULE_SPOT_COS_DEGREES, true);
+	/* The full angle 30: 20 > 15. */
+	assert_spot_lit(t, RT_RULE_SPOT_FULL_ANGLE, false);
+	/* 20 * pi^2 / 4 = 49.3 > 30. */
+	assert_spot_lit(t, RT_RULE_SPOT_PI_MACRO, false);
+	/* 12 degrees: 12 * pi^2 / 4 = 29.6 <= 30, and 12 <= 15. */
+	t = spot_text(12.0, buf, sizeof(buf));
+	assert_spot_lit(t, RT_RULE_SPOT_PI_MACRO, true);
+	assert_spot_lit(t, RT_RULE_SPOT_FULL_ANGLE, true);
+	/* 85 degrees: outside the cone, and outside cos(30 rad)'s 81.1; no
+	 * cone lights it still.  80 degrees: inside 81.1. */
+	t = spot_text(85.0, buf, sizeof(buf));
+	assert_spot_lit(t, 0, false);
+	assert_spot_lit(t, RT_RULE_SPOT_COS_DEGREES, false);
+	assert_spot_lit(t, RT_RULE_SPOT_NO_CONE, true);
+	t = spot_text(80.0, buf, sizeof(buf));
+	assert_spot_lit(t, 0, false);
+	assert_spot_lit(t, RT_RULE_SPOT_COS_DEGREES, true);
+}
+
 int main(int argc, char **argv)
 {
 	const struct CMUnitTest tests[] = {
@@ -263,6 +318,7 @@ int main(int argc, char **argv)
 		cmocka_unit_test(test_shade_rules_light_behind),
 		cmocka_unit_test(test_shade_rules_never_clamp),
 		cmocka_unit_test(test_shade_rules_floor_swapped),
+		cmocka_unit_test(test_shade_rules_spot_cone),
 	};
 
 	return SUPPORT_RUN(tests, argc, argv);
