@@ -156,6 +156,24 @@ static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struc
 	return n;
 }
 
+/* The sort moved ranks r[0..n): find each one's to-do again (from first
+ * on), its cause and the other's in the very forms. */
+static void grade_todo_find(const struct grade_ranking *g, size_t first,
+			    const struct grade_rank *r, size_t *idx, size_t n)
+{
+	size_t k, j;
+
+	for (k = 0; k < n; k++) {
+		for (j = first; j < g->n_todo; j++) {
+			const struct grade_rank *t = &g->todo[j].rank;
+			if (t->cause == r[k].cause && t->form == r[k].form && t->also == r[k].also &&
+			    (t->also == RT_CAUSE_NONE || t->also_form == r[k].also_form))
+				break;
+		}
+		idx[k] = j;
+	}
+}
+
 /* Renders in full the best few of ranks r[0..n) (sorted) made from
  * renders (index idx[k] of the to-dos), within GRADE_FULL_MARGIN dB of
  * best; their figures become exact. */
@@ -218,13 +236,57 @@ static const enum grade_cause grade_transform_pairs[][2] = {
  * nearer, over the ranking's one to-do list. */
 #define GRADE_PAIR_GAIN 1.0
 
+static int grade_pair_add(struct grade_ranking *g, enum grade_cause a, int a_form,
+			  enum grade_cause b, int b_form, const struct grade_variant *v,
+			  struct diag *d)
+{
+	struct grade_rank r;
+
+	memset(&r, 0, sizeof(r));
+	r.cause = a;
+	r.form = a_form;
+	r.also = b;
+	r.also_form = b_form;
+	return grade_todo_add(g, &r, v, d);
+}
+
+/* Two floor causes make one floor, whose best parts need not be those
+ * each came nearest in alone (400 wide is no better than 500 with the
+ * dialect's cells, and much better with cells of 10): each cause's other
+ * forms with the other's best, for the GRADE_FLOOR_SWEPT likeliest such
+ * pairs (each sweep is about a dozen renders). */
+#define GRADE_FLOOR_SWEPT 2
+static int grade_floor_pair_forms(struct grade_ranking *g, const struct grade_rank *x,
+				  const struct grade_rank *y, struct diag *d)
+{
+	const struct grade_rank *fixed[2] = { x, y }, *swept[2] = { y, x };
+	struct grade_variant va, vb, v;
+	int side, f, rc;
+
+	for (side = 0; side < 2; side++) {
+		if (!grade_variant_of(g->job, fixed[side]->cause, fixed[side]->form, &va))
+			continue;
+		for (f = 0; f < GRADE_VARIANTS; f++) {
+			if (f == swept[side]->form ||
+			    !grade_variant_of(g->job, swept[side]->cause, f, &vb) ||
+			    !grade_variant_combine(&va, &vb, &v))
+				continue;
+			rc = side == 0 ? grade_pair_add(g, x->cause, x->form, y->cause, f, &v, d)
+				       : grade_pair_add(g, x->cause, f, y->cause, y->form, &v, d);
+			if (rc < 0)
+				return rc;
+		}
+	}
+	return 0;
+}
+
 static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, size_t *n,
 			    struct diag *d)
 {
 	struct grade_rank pairs[GRADE_MAX_PAIRS + GRADE_MAX_PAIRS];
 	size_t idx[2 * GRADE_MAX_PAIRS], first = g->n_todo, np, k, j, m = 0;
 	size_t from = *n < GRADE_PAIR_FROM ? *n : GRADE_PAIR_FROM;
-	int rc;
+	int swept = 0, rc;
 
 	/* The transforms' compositions, exactly. */
 	for (k = 0; k < sizeof(grade_transform_pairs) / sizeof(grade_transform_pairs[0]); k++) {
@@ -244,11 +306,10 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 			pairs[m++] = r;
 	}
 	/* Two of the likeliest singles at once, each pair in the forms each
-	 * cause came nearest in. */
+	 * cause came nearest in (and two floors in more). */
 	for (k = 0; k < from; k++)
 		for (j = k + 1; j < from; j++) {
 			struct grade_variant va, vb, v;
-			struct grade_rank r;
 			const struct grade_rank *x = &out[k], *y = &out[j];
 			if (x->also != RT_CAUSE_NONE || y->also != RT_CAUSE_NONE)
 				continue;
@@ -263,13 +324,13 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 				continue;
 			if (va.map && vb.map)
 				continue;	/* two transforms: done exactly above */
-			memset(&r, 0, sizeof(r));
-			r.cause = x->cause;
-			r.form = x->form;
-			r.also = y->cause;
-			r.also_form = y->form;
-			if ((rc = grade_todo_add(g, &r, &v, d)) < 0)
+			if ((rc = grade_pair_add(g, x->cause, x->form, y->cause, y->form, &v, d)) < 0)
 				return rc;
+			if (va.floor_changes && vb.floor_changes && swept < GRADE_FLOOR_SWEPT) {
+				if ((rc = grade_floor_pair_forms(g, x, y, d)) < 0)
+					return rc;
+				swept++;
+			}
 		}
 	if ((rc = grade_todo_run(g, first, false, d)) < 0)
 		return rc;
@@ -277,6 +338,7 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 	for (k = 0; k < m; k++)
 		idx[k] = 0;
 	qsort(pairs + m, np, sizeof(pairs[0]), grade_rank_cmp);
+	grade_todo_find(g, first, pairs + m, idx + m, np);
 	if (np > 0 && (rc = grade_full_renders(g, pairs + m, idx + m, np, pairs[m].fig.psnr, d)) < 0)
 		return rc;
 	np += m;
@@ -352,15 +414,7 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		goto out;
 	ns = grade_todo_best(&g, 0, singles, idx, RT_CAUSE_COUNT);
 	qsort(singles, ns, sizeof(singles[0]), grade_rank_cmp);
-	/* The sort moved them: find each one's to-do again. */
-	for (k = 0; k < ns; k++) {
-		size_t j;
-		for (j = 0; j < g.n_todo; j++)
-			if (g.todo[j].rank.cause == singles[k].cause &&
-			    g.todo[j].rank.form == singles[k].form)
-				break;
-		idx[k] = j;
-	}
+	grade_todo_find(&g, 0, singles, idx, ns);
 	for (k = 0; k < *n; k++)
 		best = out[k].fig.psnr > best ? out[k].fig.psnr : best;
 	best = ns > 0 && singles[0].fig.psnr > best ? singles[0].fig.psnr : best;
