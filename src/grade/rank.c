@@ -228,14 +228,6 @@ static const enum grade_cause grade_transform_pairs[][2] = {
 	{ RT_CAUSE_TRANSPOSED, RT_CAUSE_RED_BLUE },
 };
 
-/* The singles a pair is made of: the best GRADE_PAIR_FROM of them. */
-#define GRADE_PAIR_FROM 5
-/* A pair is listed only this much nearer than the better of its two
- * causes alone: a second cause that changes nearly nothing is no pair.
- * Long: the pairs made from the best singles, rendered and kept when clearly
- * nearer, over the ranking's one to-do list. */
-#define GRADE_PAIR_GAIN 1.0
-
 static int grade_pair_add(struct grade_ranking *g, enum grade_cause a, int a_form,
 			  enum grade_cause b, int b_form, const struct grade_variant *v,
 			  struct diag *d)
@@ -279,6 +271,14 @@ static int grade_floor_pair_forms(struct grade_ranking *g, const struct grade_ra
 	}
 	return 0;
 }
+
+/* The singles a pair is made of: the best GRADE_PAIR_FROM of them. */
+#define GRADE_PAIR_FROM 5
+/* A pair is listed only this much nearer than the better of its two
+ * causes alone: a second cause that changes nearly nothing is no pair.
+ * Long: the pairs made from the best singles, rendered and kept when clearly
+ * nearer, over the ranking's one to-do list. */
+#define GRADE_PAIR_GAIN 1.0
 
 static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, size_t *n,
 			    struct diag *d)
