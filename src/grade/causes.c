@@ -62,7 +62,8 @@ static const struct grade_cause_row {
 		"epsilon (1e-6), not the handout's * 1" },
 		.rule = RT_RULE_UNIT_STARTS },
 	[RT_CAUSE_FLOOR_SWAPPED] = { .text = { "floor-swapped", "the floor's tiles swapped",
-		"tile (i, j) is white when i + j is even: i = floor((x + 500) / tile width)" },
+		"tile (i, j) is white when i + j is even: i = floor((x + width / 2) / cell), j "
+		"likewise (the classic floor: floor((x + 500) / 20))" },
 		.rule = RT_RULE_FLOOR_SWAPPED },
 	[RT_CAUSE_NO_REFLECTIONS] = { .text = { "no-reflections", "no reflections (recursion level 1)",
 		"add kr I(P + eps R, R) for each hit while level < the file's recursion level (its "
