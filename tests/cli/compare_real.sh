@@ -106,6 +106,17 @@ run compare -q --json -s 96 "$SAD" "$I/moved-odd.ppm"
 json moved-tiles-odd 'assert j["first"] == ["floor-swapped"], (j["first"], j["diagnosis"])
 assert j["best"]["causes"] == ["camera", "floor-swapped"] and j["best"]["explains"], j["best"]'
 
+# --- A moved camera and gamma on a scene symmetric left-right: at the
+# given camera the mirror and gamma come close (15.5 dB), and the camera
+# found with gamma explains the image exactly; the mirror stays only when
+# the camera found comes no nearer with what is ranked there (once pairs
+# were scored on their own renders, this image was called mirrored).
+python3 "$REF" "$SAD" "$I/moved-gamma.ppm" --size 128 --mistake gamma --eye 43.0162,-195.2469,18.6553 \
+	--look 41.3437,-95.2776,10.1470 --up 0,0,1 --fov 67.229
+run compare -q --json -s 128 "$SAD" "$I/moved-gamma.ppm"
+json moved-gamma-symmetric 'assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
+assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["explains"], j["best"]'
+
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
 python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
