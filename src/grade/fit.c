@@ -400,15 +400,14 @@ static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
  * last level: 50 is about 7 levels everywhere) was pulled away by a
  * mistake that changes most of the image: the passes are made once more
  * with each of these rendered in place of the reference (the camera and
- * the mistake fitted at once), and the nearest of all kept.  Gamma makes
- * every pixel brighter, and the plain reference's nearest camera is then
- * one that sees more of the bright parts (on sadathossain01, a sphere
- * filling a view 6 degrees wide); the floor's tiles swapped make the
- * floor's every cell the wrong colour, and the plain fit ends a dolly and
- * an alias away (on an-akhand, 48 units back at a field of view of 49
- * degrees instead of 70).  The later refit with a cause
- * (grade_fit_camera_with) starts from the camera found, too near to leave
- * such a camera. */
+ * the mistake fitted at once), and the nearest of all kept.  Gamma and no
+ * shadows (where a big object shadows the floor) make most pixels
+ * brighter, and the plain reference's nearest camera sees more of the
+ * bright parts; swapped tiles make the floor's every cell the wrong
+ * colour, and the plain fit ends a dolly and an alias away.  The later
+ * refit with a cause (grade_fit_camera_with) starts from the camera
+ * found, too near to leave such a camera; docs/validation.md (the camera
+ * fit, step 7) has the cases. */
 #define FIT_PULLED_SCORE 50.0
 static const struct {
 	enum grade_cause cause;
@@ -416,6 +415,7 @@ static const struct {
 } fit_pulling_causes[] = {
 	{ RT_CAUSE_GAMMA, 0 },
 	{ RT_CAUSE_FLOOR_SWAPPED, 0 },
+	{ RT_CAUSE_NO_SHADOWS, 0 },
 };
 
 /* The passes from the starts with the variant's colours (NULL: the
