@@ -415,11 +415,6 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 		res->n_ranks = 0;
 		if ((rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0)
 			return rc;
-		/* A match there may owe its ties what no camera within a pixel
-		 * gives: judged again without those pixels in the ties. */
-		if (res->fig_found.match && check_ties_outside(&res->found, &res->image) > 0 &&
-		    (rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0)
-			return rc;
 		/* A mirror or a flip that comes close stays, unless the camera
 		 * found comes as close with what is ranked there (a gamma image
 		 * of a symmetric scene: mirrored and gamma at the given camera
