@@ -31,14 +31,33 @@ done
 # A prefix of the suite's own, its server kept up between the runs.
 export WINEPREFIX=$T/wine WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
 wine wineboot --init >/dev/null 2>&1
-wineserver -p 60 >/dev/null 2>&1
+# Kept up until the suite ends (-p with no time): a server that timed
+# out between two runs once reset the next client's connection.
+wineserver -p >/dev/null 2>&1
 trap 'wineserver -k >/dev/null 2>&1; rm -rf "$T"' EXIT
+
+# wine_run PROGRAM ARGS...: PROGRAM under wine in $T/wd, its output in
+# $T/wout and $T/werr, its status in wrc.  Wine itself failing to start
+# the program (a status none of whitted's programs gives: they exit 0 to
+# 3; or wine's "wine client error" when its server went away) once
+# left no file and no word of why on a loaded machine: such a start is
+# tried once more, and said.
+wine_run() {
+	local try
+	for try in 1 2; do
+		(cd "$T/wd" && wine "$@") >"$T/wout" 2>"$T/werr"
+		wrc=$?
+		if [ "$wrc" -le 3 ] && ! grep -q '^wine client error' "$T/werr"; then
+			return
+		fi
+		echo "$SUITE: wine exited $wrc starting $(basename "$1") (try $try): $(tr -d '\r' <"$T/werr" | head -3)"
+	done
+}
 
 # wrun ARGS...: whitted.exe in $T/wd, like run; wine's own "\r" line
 # ends taken off its stdout and stderr.
 wrun() {
-	(cd "$T/wd" && wine "$WEXE" "$@") >"$T/wout" 2>"$T/werr"
-	wrc=$?
+	wine_run "$WEXE" "$@"
 	sed -i 's/\r$//' "$T/wout" "$T/werr"
 }
 
@@ -128,15 +147,7 @@ compare_same compare-student differs --eye 100,100,50 --look 99,99,50 --no-camer
 clean_wd
 cp "$ROOT/scenes/scene.txt" "$T/wd/"
 (cd "$T/wd" && "$LIN/scene2pov" -q -o lin.pov scene.txt) >/dev/null 2>&1
-# wine itself failing to start the program (a status none of whitted's
-# programs gives: they exit 0, 1 or 2) once left no file and no word of
-# why on a loaded machine: such a start is tried once more, and said.
-for try in 1 2; do
-	(cd "$T/wd" && wine "$WIN/scene2pov.exe" -q -o win.pov scene.txt) >"$T/wout" 2>"$T/werr"
-	wrc=$?
-	[ "$wrc" -le 2 ] && break
-	echo "$SUITE: wine exited $wrc starting scene2pov.exe (try $try): $(tr -d '\r' <"$T/werr" | head -3)"
-done
+wine_run "$WIN/scene2pov.exe" -q -o win.pov scene.txt
 if [ "$wrc" -eq 0 ]; then ok; else
 	bad scene2pov-status "exit $wrc: $(tr -d '\r' <"$T/werr" | head -3)"
 fi
