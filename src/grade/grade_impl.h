@@ -46,7 +46,9 @@ enum grade_floor_change {
 
 /* The most forms a cause has. */
 #define GRADE_VARIANTS 8
-#define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * GRADE_VARIANTS + GRADE_MAX_PAIRS)
+/* Every form of every cause, the best with every other, the pairs' and
+ * the full renders. */
+#define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * (GRADE_VARIANTS + 1) + GRADE_MAX_PAIRS)
 
 /* The render of form `form` of cause c into v; false when the cause has
  * no such form for this job (or the form would not change the image). */

@@ -272,7 +272,10 @@ static int grade_floor_pair_forms(struct grade_ranking *g, const struct grade_ra
 	return 0;
 }
 
-/* The singles a pair is made of: the best GRADE_PAIR_FROM of them. */
+/* The singles a pair is made of: the best GRADE_PAIR_FROM of them with
+ * one another, and the best with every other (a floor's error can hide
+ * a small second cause far down the singles: sr38's white highlight,
+ * eighth alone, is 48 dB with the tiles swapped). */
 #define GRADE_PAIR_FROM 5
 /* A pair is listed only this much nearer than the better of its two
  * causes alone: a second cause that changes nearly nothing is no pair.
@@ -308,7 +311,7 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 	/* Two of the likeliest singles at once, each pair in the forms each
 	 * cause came nearest in (and two floors in more). */
 	for (k = 0; k < from; k++)
-		for (j = k + 1; j < from; j++) {
+		for (j = k + 1; j < (k == 0 ? *n : from); j++) {
 			struct grade_variant va, vb, v;
 			const struct grade_rank *x = &out[k], *y = &out[j];
 			if (x->also != RT_CAUSE_NONE || y->also != RT_CAUSE_NONE)

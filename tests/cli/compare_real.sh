@@ -167,6 +167,20 @@ run compare -q --json -s 48 "$SCENE" "$I/white-rb.ppm"
 json pair 'assert j["first"] == ["red-blue+white-highlight"], j["first"]
 assert j["best"]["causes"] == ["red-blue", "white-highlight"] and j["best"]["explains"], j["best"]'
 
+# --- Two render mistakes, one of them small: sr38's tiles swapped and
+# white highlight (the student-renders README), by the independent
+# renderer at that student's camera and floor.  The highlight alone
+# ranks eighth (the floor's error hides it); the best cause is paired
+# with every other, so the pair is found (the five best with one another
+# named the tiles alone, 22.3 dB).
+SR38=(--eye 100,90,20 --look 99,89,20 --up 0,0,1 --fov 90 --floor 3000,30)
+python3 "$REF" "$DATA/student-renders/sr38-scene.txt" "$I/sr38-two.ppm" --size 64 "${SR38[@]}" \
+	--mistake floor-swapped,white-highlight
+run compare -q --json --no-camera-fit -s 64 "${SR38[@]}" "$DATA/student-renders/sr38-scene.txt" "$I/sr38-two.ppm"
+json pair-far-down 'assert j["first"] == ["white-highlight+floor-swapped"] and j["best"]["explains"], j["causes"][:2]
+alone = [c for c in j["causes"] if c["id"] == "white-highlight"]
+assert alone and j["causes"].index(alone[0]) >= 5, [c["id"] for c in j["causes"]]'
+
 # --- Gamma written by a truncating program: explained whole.
 python3 "$REF" "$SCENE" "$I/gamma-trunc.ppm" --size 48 --mistake gamma --truncate
 run compare -q --json -s 48 "$SCENE" "$I/gamma-trunc.ppm"
