@@ -69,6 +69,10 @@ void check_reference_free(struct check_reference *ref);
 int check_view_make(const struct check_reference *ref, const struct camera_params *p, int width,
 		    int height, double angle, struct check_view *v, struct diag *d);
 void check_view_free(struct check_view *v);
+/* Takes out of a found camera's ties the pixels whose submitted colour no
+ * camera within a pixel gives (outside the reference's 3 x 3
+ * neighbourhood's range); returns how many (check_geometry.c). */
+long check_ties_outside(struct check_view *v, const struct image *sub);
 /* Moves view from into to (its job's camera is its own: a plain copy
  * would point at from's); from is left empty. */
 void check_view_move(struct check_view *to, struct check_view *from);

@@ -143,3 +143,65 @@ int check_compare_cameras(const struct check_view *a, const struct check_view *b
 	rt_free(skip);
 	return rc;
 }
+
+/* Whether sub's colour at pixel (x, y) is more than CHECK_TIE_OUTSIDE
+ * levels outside the range of the reference's 3 x 3 neighbourhood in a
+ * channel: no camera within a pixel gives it. */
+#define CHECK_TIE_OUTSIDE 8
+
+static bool check_outside(const struct image *ref, const struct image *sub, int x, int y)
+{
+	const int w = ref->width, h = ref->height;
+	const size_t k = (size_t)y * (size_t)w + (size_t)x;
+	int i, j, c;
+
+	for (c = 0; c < 3; c++) {
+		int lo = 255, hi = 0, s = sub->pixels[3 * k + c];
+		for (j = -1; j <= 1; j++)
+			for (i = -1; i <= 1; i++) {
+				int q;
+				if (x + i < 0 || x + i >= w || y + j < 0 || y + j >= h)
+					continue;
+				q = ref->pixels[3 * ((size_t)(y + j) * (size_t)w + (size_t)(x + i)) + c];
+				lo = q < lo ? q : lo;
+				hi = q > hi ? q : hi;
+			}
+		if (s < lo - CHECK_TIE_OUTSIDE || s > hi + CHECK_TIE_OUTSIDE)
+			return true;
+	}
+	return false;
+}
+
+/* A camera known within a pixel moves the colours of a tie within its
+ * neighbourhood's range: tie pixels whose submitted colour is outside it
+ * are differences, not the camera's (a white highlight where the
+ * reference's is coloured, on a small sphere whose highlight is edges all
+ * over).  When more of them than the gate allows off by more than 8
+ * levels (on the moved set: 50 to 171 of 65536 pixels for a white
+ * highlight, 1 to 5 for correct renders a found camera matches), they
+ * leave v's ties; returns how many left. */
+long check_ties_outside(struct check_view *v, const struct image *sub)
+{
+	const int w = v->image.width, h = v->image.height;
+	long n = 0;
+	int x, y, pass;
+
+	if (sub->width != w || sub->height != h)
+		return 0;
+	for (pass = 0; pass < 2; pass++) {
+		for (y = 0; y < h; y++)
+			for (x = 0; x < w; x++) {
+				size_t k = (size_t)y * (size_t)w + (size_t)x;
+				if (!v->ties[k] || !check_outside(&v->image, sub, x, y))
+					continue;
+				if (pass == 0)
+					n++;
+				else
+					v->ties[k] = 0;
+			}
+		if (pass == 0 && (double)n <= RT_GRADE_MAX_OFF8 * (double)w * (double)h)
+			return 0;
+	}
+	v->n_ties -= n;
+	return n;
+}

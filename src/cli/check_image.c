@@ -230,6 +230,46 @@ static int check_at(struct check_view *v, struct check_result *res, struct grade
 static int check_image_read(struct check_reference *ref, struct check_result *res,
 			    struct diag *d);
 
+/* A match at the camera found may owe its ties what no camera within a
+ * pixel gives (a white highlight on a small sphere, whose coloured
+ * highlight is edges all over, all ties there): those pixels leave the
+ * ties and the image is judged again.  The new judgement stands only
+ * when a cause explains them or comes close; otherwise they were the
+ * fit's own error after all (a correct 48-pixel render has 3 of 2304,
+ * more than the gate's 0.02%: a camera found to a fraction of a pixel
+ * still moves a reflection's edge by more than one) and the match
+ * stands, ties and all. */
+static int check_untie_outside(struct check_result *res, struct diag *d)
+{
+	struct check_view *v = &res->found;
+	const size_t total = (size_t)v->image.width * (size_t)v->image.height;
+	const struct grade_figures fig = res->fig_found, rounded = res->fig_rounded;
+	const bool truncated = res->truncated;
+	const enum check_explained was = res->explained;
+	const long n_ties = v->n_ties;
+	uint8_t *ties = rt_malloc(total);
+	int rc = 0;
+
+	if (!ties)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the ties");
+	memcpy(ties, v->ties, total);
+	if (check_ties_outside(v, &res->image) > 0) {
+		res->n_ranks = 0;
+		rc = check_at(v, res, &res->fig_found, true, d);
+		if (rc == 0 && !res->fig_found.match && res->explained == CHECK_NONE) {
+			memcpy(v->ties, ties, total);
+			v->n_ties = n_ties;
+			res->fig_found = fig;
+			res->fig_rounded = rounded;
+			res->truncated = truncated;
+			res->explained = was;
+			res->n_ranks = 0;
+		}
+	}
+	rt_free(ties);
+	return rc;
+}
+
 /* A camera and a mistake at once.  A shading mistake pulls the fit of
  * the plain reference off the true camera (missing shadows, a white
  * highlight), and the floor's tiles swapped look like a camera a cell
@@ -413,7 +453,8 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 		return rc;
 	if (res->moved) {
 		res->n_ranks = 0;
-		if ((rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0)
+		if ((rc = check_at(&res->found, res, &res->fig_found, true, d)) < 0 ||
+		    (res->fig_found.match && (rc = check_untie_outside(res, d)) < 0))
 			return rc;
 		/* A mirror or a flip that comes close stays, unless the camera
 		 * found comes as close with what is ranked there (a gamma image
@@ -451,26 +492,4 @@ void check_result_free(struct check_result *res)
 	rt_free(res->ids);
 	res->objects = NULL;
 	res->ids = NULL;
-}
-
-int check_diff_picture(const struct check_reference *ref, const struct check_result *res,
-		       struct image *out, struct diag *d)
-{
-	const struct check_view *v = check_result_view(ref, res);
-	const struct image *shown = res->truncated && v->truncated.pixels ? &v->truncated : &v->image;
-	size_t slots = scene_shape_count(ref->scene) + 2, k;
-	uint8_t *differs = rt_calloc(slots, 1);
-	int rc;
-
-	if (!differs)
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the difference");
-	for (k = 0; k < res->n_objects; k++) {
-		const struct grade_object *o = &res->objects[k];
-		size_t slot = o->index > 0 ? (size_t)o->index + 1 : strcmp(o->keyword, "floor") == 0;
-		if (slot < slots && o->off2 > 5.0 * RT_GRADE_MAX_OFF2)
-			differs[slot] = 1;
-	}
-	rc = grade_diff_picture(shown, &res->image, v->ties, res->ids, differs, out, d);
-	rt_free(differs);
-	return rc;
 }

@@ -117,6 +117,18 @@ run compare -q --json -s 128 "$SAD" "$I/moved-gamma.ppm"
 json moved-gamma-symmetric 'assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
 assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["explains"], j["best"]'
 
+# --- A moved camera and a white highlight: at the camera found, the
+# reference's highlight on a small sphere is edges all over, which the
+# found camera's ties leave out; the submitted white there is outside
+# what any camera within a pixel gives (the reference's 3 x 3
+# neighbourhood), so those pixels are judged (it was called a match).
+python3 "$REF" "$AK" "$I/moved-white.ppm" --size 128 \
+	--mistake white-highlight --eye 43.0162,-195.2469,18.6553 --look 41.3437,-95.2776,10.1470 \
+	--up 0,0,1 --fov 67.229
+run compare -q --json -s 128 "$AK" "$I/moved-white.ppm"
+json moved-white-highlight 'assert j["verdict"] == "differs" and j["first"] == ["white-highlight"], (j["verdict"], j["first"])
+assert j["camera"]["moved"] is True and "white-highlight" in j["best"]["causes"], j["best"]'
+
 # --- Ties: a correct render at an odd size, where the middle row's rays
 # meet the floor exactly on a cell's edge: either colour is right.
 python3 "$REF" "$SCENE" "$I/odd.ppm" --size 129
