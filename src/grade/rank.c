@@ -145,10 +145,20 @@ static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struc
 			continue;
 		for (j = 0; j < n && !(out[j].cause == r->cause && out[j].also == r->also); j++)
 			;
-		if (j == n && n < cap) {
+		if (j == n && n == cap && cap > 0) {
+			/* Full: the best cap of them, not the first (the pairs of
+			 * the likeliest single with every other come first). */
+			size_t worst = 0;
+			for (j = 1; j < n; j++)
+				worst = out[j].fig.psnr < out[worst].fig.psnr ? j : worst;
+			if (r->fig.psnr > out[worst].fig.psnr) {
+				out[worst] = *r;
+				idx[worst] = k;
+			}
+		} else if (j == n) {
 			out[n] = *r;
 			idx[n++] = k;
-		} else if (j < n && r->fig.psnr > out[j].fig.psnr) {
+		} else if (r->fig.psnr > out[j].fig.psnr) {
 			out[j] = *r;
 			idx[j] = k;
 		}
