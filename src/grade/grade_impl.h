@@ -46,8 +46,9 @@ enum grade_floor_change {
 
 /* The most forms a cause has. */
 #define GRADE_VARIANTS 8
-/* Every form of every cause, the best with every other, the pairs' and
- * the full renders. */
+/* A bound on the renders of one ranking: far above what the causes'
+ * table makes (51 forms of singles, about 30 pairs with the floors'
+ * sweeps, 6 in full: about 104 in all). */
 #define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * (GRADE_VARIANTS + 1) + GRADE_MAX_PAIRS)
 
 /* The render of form `form` of cause c into v; false when the cause has

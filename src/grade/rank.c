@@ -133,7 +133,7 @@ static int grade_todo_run(struct grade_ranking *g, size_t first, bool full, stru
 }
 
 /* The best to-do of each cause (or pair) among [first, n_todo), into
- * out (n of them, at most cap). */
+ * out (n of them, at most cap: then the cap best). */
 static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struct grade_rank *out,
 			      size_t *idx, size_t cap)
 {
@@ -145,9 +145,14 @@ static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struc
 			continue;
 		for (j = 0; j < n && !(out[j].cause == r->cause && out[j].also == r->also); j++)
 			;
-		if (j == n && n == cap && cap > 0) {
+		if (j == n && n < cap) {
+			out[n] = *r;
+			idx[n++] = k;
+		} else if (j == n && cap > 0) {
 			/* Full: the best cap of them, not the first (the pairs of
-			 * the likeliest single with every other come first). */
+			 * the likeliest single with every other come first).  An
+			 * evicted one cannot come back in a worse form: each
+			 * pair's forms are made one after another. */
 			size_t worst = 0;
 			for (j = 1; j < n; j++)
 				worst = out[j].fig.psnr < out[worst].fig.psnr ? j : worst;
@@ -155,10 +160,7 @@ static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struc
 				out[worst] = *r;
 				idx[worst] = k;
 			}
-		} else if (j == n) {
-			out[n] = *r;
-			idx[n++] = k;
-		} else if (r->fig.psnr > out[j].fig.psnr) {
+		} else if (j < n && r->fig.psnr > out[j].fig.psnr) {
 			out[j] = *r;
 			idx[j] = k;
 		}
