@@ -73,6 +73,16 @@ void check_view_free(struct check_view *v);
  * camera within a pixel gives (outside the reference's 3 x 3
  * neighbourhood's range); returns how many (check_geometry.c). */
 long check_ties_outside(struct check_view *v, const struct image *sub);
+/* The view at a camera found, the ties allowing for the fit's own
+ * uncertainty (check_geometry.c). */
+int check_found_view(const struct check_reference *ref, const struct check_view *v,
+		     const struct camera_params *p, struct check_view *out, struct diag *d);
+/* Whether sub is the plain reference seen from the camera found turned a
+ * quarter about the vertical axis through the origin (a symmetric scene's
+ * tiles swapped); then found becomes that view and *fig its figures
+ * (check_geometry.c). */
+int check_quarter_turn(const struct check_reference *ref, struct check_view *found,
+		       const struct image *sub, struct grade_figures *fig, struct diag *d);
 /* Moves view from into to (its job's camera is its own: a plain copy
  * would point at from's); from is left empty. */
 void check_view_move(struct check_view *to, struct check_view *from);

@@ -205,3 +205,60 @@ long check_ties_outside(struct check_view *v, const struct image *sub)
 	v->n_ties -= n;
 	return n;
 }
+
+/* The fit's precision, in pixels: its ties allow for that much. */
+#define CHECK_FIT_PIXELS 0.35
+
+int check_found_view(const struct check_reference *ref, const struct check_view *v,
+		     const struct camera_params *p, struct check_view *out, struct diag *d)
+{
+	double angle = CHECK_FIT_PIXELS * 2.0 * tan(p->fov_deg * 3.14159265358979323846 / 360.0) /
+		       v->camera.height;
+
+	return check_view_make(ref, p, v->camera.width, v->camera.height, angle, out, d);
+}
+
+/* A quarter turn about the vertical axis through the origin maps the
+ * floor's checkerboard (centred there, or counted from there) onto itself
+ * with its tiles swapped: cell (i, j) goes to (-j - 1, i) or (j, -i - 1)
+ * less a whole number, and i + j's parity flips.  A scene whose objects
+ * look the same turned (sadathossain01's: all inside a sphere about the
+ * origin) then shows, from the camera found turned back, the tiles
+ * swapped to the bit: a correct image was called a mistake there.  Both
+ * are exact; the turned camera is taken only when it is nearer the given
+ * one (students move the camera a few key presses from where it starts):
+ * an image with the tiles swapped stays that from near the start. */
+static struct vec3 check_turn(struct vec3 a, double s)
+{
+	return vec3_make(-s * a.y, s * a.x, a.z);
+}
+
+int check_quarter_turn(const struct check_reference *ref, struct check_view *found,
+		       const struct image *sub, struct grade_figures *fig, struct diag *d)
+{
+	double s;
+	int rc;
+
+	for (s = -1.0; s <= 1.0; s += 2.0) {
+		struct camera_params p = found->params;
+		struct check_view v;
+		struct grade_figures f;
+		p.eye = check_turn(p.eye, s);
+		p.look = check_turn(p.look, s);
+		p.up = check_turn(p.up, s);
+		if (vec3_length(vec3_sub(p.eye, ref->params.eye)) >=
+		    vec3_length(vec3_sub(found->params.eye, ref->params.eye)))
+			continue;
+		if ((rc = check_found_view(ref, found, &p, &v, d)) < 0)
+			return rc;
+		grade_figures_skipping(&v.image, sub, v.ties, &f);
+		if (f.match) {
+			check_view_free(found);
+			check_view_move(found, &v);
+			*fig = f;
+			return 0;
+		}
+		check_view_free(&v);
+	}
+	return 0;
+}

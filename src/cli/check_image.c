@@ -34,8 +34,6 @@
  * CHECK_MOVED_GREY_MSE (20 dB). */
 #define CHECK_MOVED_GREY 0.5
 #define CHECK_MOVED_GREY_MSE 650.0
-/* The fit's precision, in pixels: its ties allow for that much. */
-#define CHECK_FIT_PIXELS 0.35
 
 const struct check_view *check_result_view(const struct check_reference *ref,
 					   const struct check_result *res)
@@ -101,17 +99,6 @@ static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n
 	bool b = r->also != RT_CAUSE_NONE && grade_cause_moves_pixels(r->also);
 
 	return n > 0 && (a || b);
-}
-
-/* The view at a camera found, the ties allowing for the fit's own
- * uncertainty. */
-static int check_found_view(const struct check_reference *ref, const struct check_view *v,
-			    const struct camera_params *p, struct check_view *out, struct diag *d)
-{
-	double angle = CHECK_FIT_PIXELS * 2.0 * tan(p->fov_deg * 3.14159265358979323846 / 360.0) /
-		       v->camera.height;
-
-	return check_view_make(ref, p, v->camera.width, v->camera.height, angle, out, d);
 }
 
 /* The camera that took the image, when it is not the given one: fitted
@@ -472,6 +459,12 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 			   (rc = check_refit(ref, v, res, d)) < 0) {
 			return rc;
 		}
+		/* Exactly the tiles swapped: a quarter turn away, maybe no mistake. */
+		if (res->moved && !res->fig_found.match && res->n_ranks > 0 && res->ranks[0].fig.match &&
+		    res->ranks[0].cause == RT_CAUSE_FLOOR_SWAPPED && res->ranks[0].also == RT_CAUSE_NONE &&
+		    (rc = check_quarter_turn(ref, &res->found, &res->image, &res->fig_found, d)) < 0)
+			return rc;
+		res->n_ranks = res->fig_found.match ? 0 : res->n_ranks;
 	}
 	if (res->moved) {
 		if (res->fig_found.match) {

@@ -117,6 +117,18 @@ run compare -q --json -s 128 "$SAD" "$I/moved-gamma.ppm"
 json moved-gamma-symmetric 'assert j["first"] == ["gamma"], (j["first"], j["diagnosis"])
 assert j["best"]["causes"] == ["camera", "gamma"] and j["best"]["explains"], j["best"]'
 
+# --- A correct render of a scene that looks the same turned a quarter
+# about the origin: the fit found the camera turned a quarter the other
+# way, where the tiles swapped explain it exactly; the turned camera,
+# nearer the one the student started from, is a plain match (it was
+# called tiles swapped).  The moved-camera set's sadathossain01 camera 2.
+python3 "$REF" "$SAD" "$I/moved-quarter.ppm" --size 128 --eye -55.5005,-177.9625,14.1913 \
+	--look -6.1075,-91.0135,11.9906 --up 0,0,1 --fov 64.952
+run compare -q --json -s 128 "$SAD" "$I/moved-quarter.ppm"
+json moved-quarter-turn 'assert j["verdict"] == "match" and j["camera"]["moved"] is True, (j["verdict"], j["first"])
+eye = [float(v) for v in j["camera"]["options"].split()[1].split(",")]
+assert abs(eye[0] + 55.5) < 2 and abs(eye[1] + 178) < 2, eye'
+
 # --- A moved camera and a white highlight: at the camera found, the
 # reference's highlight on a small sphere is edges all over, which the
 # found camera's ties leave out; the submitted white there is outside
