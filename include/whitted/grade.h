@@ -70,6 +70,8 @@ enum grade_cause {
 	RT_CAUSE_CHECKER_PHASE,		/* the cells counted from another origin */
 	RT_CAUSE_FLOOR_PLACE,		/* the floor with a corner at the origin */
 	RT_CAUSE_SPOT_CONE,		/* a spotlight's cone of another width, or none */
+	RT_CAUSE_FLOOR_FINISH,		/* the floor's coefficients and shininess another
+					 * (the job's floor_finish, fitted) */
 	RT_CAUSE_COUNT
 };
 
@@ -101,6 +103,11 @@ struct grade_job {
 	int samples;		/* --samples N: N x N rays a pixel; 0 or 1: one */
 	int threads;
 	const volatile sig_atomic_t *cancel;	/* may be NULL */
+	/* The floor's finishes found from a submission (grade_fit_floor_finish),
+	 * which RT_CAUSE_FLOOR_FINISH renders (its forms): the fit's values
+	 * rounded, and as they came; none when n_floor_finishes is 0. */
+	int n_floor_finishes;
+	struct material floor_finishes[2];
 };
 
 struct grade_rank {
@@ -155,6 +162,33 @@ int grade_tie_mask(const struct grade_job *job, const struct image *ref, double 
 int grade_rank_causes(const struct grade_job *job, const struct image *ref,
 		      const struct image *tref, const struct image *sub, const uint8_t *skip,
 		      struct grade_rank out[GRADE_MAX_RANKS], size_t *n, struct diag *d);
+
+/* The floor's finish (ambient, diffuse, specular and reflection
+ * coefficients, shininess) that brings the job's render nearest sub on a
+ * sample of the floor's pixels (those skip, which may be NULL, does not
+ * mark; sub's bytes taken as truncated or rounded): a least-squares fit
+ * for each of a list of exponents, with form also_form of cause `also`
+ * rendered too (RT_CAUSE_NONE: the reference; a second cause pulls a fit
+ * made without it).  Sets job->floor_finishes (the values rounded to
+ * 0.05, then as they came when they differ) when it fits clearly better
+ * than the scene floor's own finish (RT_CAUSE_FLOOR_FINISH then renders
+ * them), else job->n_floor_finishes to 0; none for a textured floor,
+ * --samples, or a cause the rules' trace does not render whole.  0, or
+ * < 0 with d filled. */
+int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const uint8_t *skip,
+			   bool truncated, enum grade_cause also, int also_form, struct diag *d);
+
+/* grade_rank_causes with the floor's finish fitted first
+ * (grade_fit_floor_finish, sub's bytes taken as truncated or rounded);
+ * when the likeliest is then the finish with another cause, the finish
+ * is fitted again with that cause rendered too and the causes ranked
+ * again, which stands when its best comes nearer.  The job keeps the
+ * finishes its ranking rendered (for grade_cause_detail and
+ * grade_cause_image). */
+int grade_rank_with_finish(struct grade_job *job, const struct image *ref,
+			   const struct image *tref, const struct image *sub, const uint8_t *skip,
+			   bool truncated, struct grade_rank out[GRADE_MAX_RANKS], size_t *n,
+			   struct diag *d);
 
 /* The image of a ranked cause (or pair), at full size (for the report). */
 int grade_cause_image(const struct grade_job *job, const struct image *ref,

@@ -205,8 +205,8 @@ static int check_at(struct check_view *v, struct check_result *res, struct grade
 	sub = judged.pixels ? &judged : &res->image;
 	rc = check_figures(v, sub, fig, &res->fig_rounded, &res->truncated, d);
 	if (rc == 0 && rank && !fig->match) {
-		rc = grade_rank_causes(&v->job, &v->image, &v->truncated, sub, v->ties, res->ranks,
-				       &res->n_ranks, d);
+		rc = grade_rank_with_finish(&v->job, &v->image, &v->truncated, sub, v->ties,
+					    res->truncated, res->ranks, &res->n_ranks, d);
 		if (rc == 0)
 			check_explain(res, fig);
 	}

@@ -18,7 +18,7 @@ static const struct grade_job *check_job(const struct check_reference *ref,
 static void check_one_cause(const struct grade_job *job, enum grade_cause c, int form, char *buf,
 			    size_t size)
 {
-	char detail[96];
+	char detail[128];
 
 	grade_cause_detail(job, c, form, detail, sizeof(detail));
 	if (detail[0] && c != RT_CAUSE_GAMMA && c != RT_CAUSE_LIGHT_BEHIND && c != RT_CAUSE_PIXEL_CORNERS)

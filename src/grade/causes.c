@@ -94,6 +94,10 @@ static const struct grade_cause_row {
 		"light P only when the angle between P - position and the axis is at most the "
 		"cutoff, in degrees: cos(angle) >= cos(cutoff * pi / 180), with pi in parentheses "
 		"if it is a macro" } },
+	[RT_CAUSE_FLOOR_FINISH] = { .text = { "floor-finish", "the floor's own coefficients",
+		"give the floor the assignment's finish (the classic floor: ambient 0.4, diffuse "
+		"0.2, specular 0.2, reflection 0.2, shininess 1; nearfar: the file's header)" },
+		.floor = GRADE_FLOOR_FINISH },
 };
 
 static const struct grade_cause_text grade_clamp_level_text = {
@@ -176,20 +180,34 @@ static bool grade_has_spotlight(const struct grade_job *job)
 	return false;
 }
 
+/* The scene's own floor as another floor's starting point (not moved:
+ * the scene floor's shape and cells render); false when there is none. */
+static bool grade_floor_as_scene(const struct grade_job *job, struct shade_floor *fl)
+{
+	double half, cell;
+
+	memset(fl, 0, sizeof(*fl));
+	if (!grade_scene_floor(job, &half, &cell))
+		return false;
+	fl->half = half;
+	fl->cell = cell;
+	/* The contract's cells: from the corner of a finite floor, from the
+	 * origin of an endless one. */
+	fl->ox = fl->oy = half == INFINITY ? 0.0 : -half;
+	return true;
+}
+
 /* The other floor of a floor cause's form; false for no such form. */
 static bool grade_floor_form(const struct grade_job *job, enum grade_cause c, int form,
 			     struct shade_floor *fl)
 {
 	double half, cell;
 
-	if (!grade_scene_floor(job, &half, &cell))
+	if (!grade_floor_as_scene(job, fl))
 		return false;
-	fl->half = half;
-	fl->cell = cell;
-	fl->cx = fl->cy = 0.0;
-	/* The contract's cells: from the corner of a finite floor, from the
-	 * origin of an endless one. */
-	fl->ox = fl->oy = half == INFINITY ? 0.0 : -half;
+	fl->moved = true;
+	half = fl->half;
+	cell = fl->cell;
 	switch (c) {
 	case RT_CAUSE_FLOOR_HORIZON:
 		if (form > 0 || half == INFINITY)
@@ -310,6 +328,17 @@ bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 		v->other_floor = true;
 		v->floor_changes = grade_causes[c].floor;
 		return grade_floor_form(job, c, form, &v->floor);
+	case RT_CAUSE_FLOOR_FINISH:
+		/* The scene floor's shape with the finish fitted (its shape's
+		 * parts the scene's, for a floor cause to combine with). */
+		if (form >= job->n_floor_finishes || !grade_floor_as_scene(job, &v->floor))
+			return false;
+		v->use_rules = true;
+		v->other_floor = true;
+		v->floor_changes = GRADE_FLOOR_FINISH;
+		v->floor.own_finish = true;
+		v->floor.finish = job->floor_finishes[form];
+		return true;
 	case RT_CAUSE_SPOT_CONE:
 		if (form >= (int)(sizeof(grade_spot_rules) / sizeof(grade_spot_rules[0])) ||
 		    !grade_has_spotlight(job))
@@ -348,6 +377,11 @@ bool grade_variant_combine(const struct grade_variant *a, const struct grade_var
 	} else if (b->other_floor) {
 		/* b's parts of the floor over a's (both made from the scene's). */
 		out->floor_changes |= b->floor_changes;
+		out->floor.moved = a->floor.moved || b->floor.moved;
+		if (b->floor_changes & GRADE_FLOOR_FINISH) {
+			out->floor.own_finish = true;
+			out->floor.finish = b->floor.finish;
+		}
 		if (b->floor_changes & GRADE_FLOOR_HALF)
 			out->floor.half = b->floor.half;
 		if (b->floor_changes & GRADE_FLOOR_CELL)
@@ -369,6 +403,16 @@ bool grade_variant_combine(const struct grade_variant *a, const struct grade_var
 	if (b->settings.clamp != base->clamp)
 		out->settings.clamp = b->settings.clamp;
 	return true;
+}
+
+/* "ka kd ks kr 0.25 0.25 0.25 0.25, shininess 15, not 0.4 0.2 0.2 0.2, 1"
+ * (%g: the fit rounds its values where a round value fits as well). */
+static void grade_finish_words(const struct material *m, const struct material *was, char *buf,
+			       size_t size)
+{
+	snprintf(buf, size, "ka kd ks kr %.3g %.3g %.3g %.3g, shininess %.3g, not %.3g %.3g %.3g %.3g, "
+		 "%.3g", m->ka, m->kd, m->ks, m->kr, m->shininess, was->ka, was->kd, was->ks, was->kr,
+		 was->shininess);
 }
 
 void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int form, char *buf,
@@ -409,6 +453,9 @@ void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int for
 		break;
 	case RT_CAUSE_SPOT_CONE:
 		snprintf(buf, size, "%s", grade_spot_details[form]);
+		break;
+	case RT_CAUSE_FLOOR_FINISH:
+		grade_finish_words(&v.floor.finish, &scene_view_of(job->scene)->floor_mat, buf, size);
 		break;
 	case RT_CAUSE_CHECKER_PHASE:
 		snprintf(buf, size, form == 0 ? "from the origin" : form == 1

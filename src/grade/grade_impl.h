@@ -42,6 +42,7 @@ enum grade_floor_change {
 	GRADE_FLOOR_CELL = 1u << 1,	/* its cells' size */
 	GRADE_FLOOR_ORIGIN = 1u << 2,	/* where the cells are counted from */
 	GRADE_FLOOR_CENTRE = 1u << 3,	/* where it lies */
+	GRADE_FLOOR_FINISH = 1u << 4,	/* its coefficients and shininess */
 };
 
 /* The most forms a cause has. */

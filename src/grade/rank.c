@@ -160,7 +160,12 @@ static size_t grade_todo_best(const struct grade_ranking *g, size_t first, struc
 				out[worst] = *r;
 				idx[worst] = k;
 			}
-		} else if (j < n && r->fig.psnr > out[j].fig.psnr) {
+		} else if (j < n && (r->fig.psnr > out[j].fig.psnr ||
+				     (r->fig.psnr == out[j].fig.psnr &&
+				      r->form + r->also_form < out[j].form + out[j].also_form))) {
+			/* Its best form; of equals, the earlier forms (the
+			 * commoner: the floor's finish rounded as students
+			 * write it). */
 			out[j] = *r;
 			idx[j] = k;
 		}
@@ -254,21 +259,28 @@ static int grade_pair_add(struct grade_ranking *g, enum grade_cause a, int a_for
 	return grade_todo_add(g, &r, v, d);
 }
 
-/* Two floor causes make one floor, whose best parts need not be those
- * each came nearest in alone (400 wide is no better than 500 with the
- * dialect's cells, and much better with cells of 10): each cause's other
- * forms with the other's best, for the GRADE_FLOOR_SWEPT likeliest such
- * pairs (each sweep is about a dozen renders). */
+/* A floor cause changes most of the image, so the forms a pair's causes
+ * came nearest in alone need not be their best together: two floor
+ * causes make one floor (400 wide is no better than 500 with the
+ * dialect's cells, and much better with cells of 10), and a floor's own
+ * finish hides which form of a spotlight's cone is right (sr20: the
+ * spotlights left out alone, the PI macro with the finish).  So each
+ * cause's other forms with the other's best (sides: bit 0 y's forms, bit
+ * 1 x's), for the GRADE_FLOOR_SWEPT likeliest pairs of two floor causes
+ * and the GRADE_FINISH_SWEPT likeliest of the floor's finish with
+ * another cause (each sweep is about a dozen renders). */
 #define GRADE_FLOOR_SWEPT 2
+#define GRADE_FINISH_SWEPT 2
 static int grade_floor_pair_forms(struct grade_ranking *g, const struct grade_rank *x,
-				  const struct grade_rank *y, struct diag *d)
+				  const struct grade_rank *y, unsigned sides, struct diag *d)
 {
 	const struct grade_rank *fixed[2] = { x, y }, *swept[2] = { y, x };
 	struct grade_variant va, vb, v;
 	int side, f, rc;
 
 	for (side = 0; side < 2; side++) {
-		if (!grade_variant_of(g->job, fixed[side]->cause, fixed[side]->form, &va))
+		if (!(sides & (1u << side)) ||
+		    !grade_variant_of(g->job, fixed[side]->cause, fixed[side]->form, &va))
 			continue;
 		for (f = 0; f < GRADE_VARIANTS; f++) {
 			if (f == swept[side]->form ||
@@ -301,7 +313,7 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 	struct grade_rank pairs[GRADE_MAX_PAIRS + GRADE_MAX_PAIRS];
 	size_t idx[2 * GRADE_MAX_PAIRS], first = g->n_todo, np, k, j, m = 0;
 	size_t from = *n < GRADE_PAIR_FROM ? *n : GRADE_PAIR_FROM;
-	int swept = 0, rc;
+	int swept = 0, finish_swept = 0, rc;
 
 	/* The transforms' compositions, exactly. */
 	for (k = 0; k < sizeof(grade_transform_pairs) / sizeof(grade_transform_pairs[0]); k++) {
@@ -341,10 +353,16 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 				continue;	/* two transforms: done exactly above */
 			if ((rc = grade_pair_add(g, x->cause, x->form, y->cause, y->form, &v, d)) < 0)
 				return rc;
-			if (va.floor_changes && vb.floor_changes && swept < GRADE_FLOOR_SWEPT) {
-				if ((rc = grade_floor_pair_forms(g, x, y, d)) < 0)
+			if (va.floor_changes && vb.floor_changes ? swept++ < GRADE_FLOOR_SWEPT
+			    : (va.floor_changes | vb.floor_changes) & GRADE_FLOOR_FINISH) {
+				/* With the floor's finish: its other form (rounded
+				 * or as fitted) with every cause, and the other
+				 * cause's forms for the likeliest few. */
+				unsigned sides = va.floor_changes && vb.floor_changes ? 3u
+					: finish_swept++ < GRADE_FINISH_SWEPT ? 3u
+					: vb.floor_changes & GRADE_FLOOR_FINISH ? 1u : 2u;
+				if ((rc = grade_floor_pair_forms(g, x, y, sides, d)) < 0)
 					return rc;
-				swept++;
 			}
 		}
 	if ((rc = grade_todo_run(g, first, false, d)) < 0)

@@ -163,7 +163,7 @@ static const struct shape *rules_intersect(const struct scene *s, const struct s
 	const struct shape *hit = accel_intersect(s->accel, r, eps, t);
 	double tf;
 
-	if (!fl || !s->floor)
+	if (!fl || !fl->moved || !s->floor)
 		return hit;
 	while (hit == s->floor && !rules_floor_covers(fl, ray_at(r, *t))) {
 		double t_min = *t;
@@ -203,12 +203,12 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 	hit = rules_intersect(s, fl, r, eps, &t);
 	if (!hit)
 		return color_make(0.0, 0.0, 0.0);
-	m = &hit->mat;
+	m = fl && fl->own_finish && hit == s->floor ? &fl->finish : &hit->mat;
 	p = ray_at(r, t);
 	base = shape_color_at(hit, p);
 	if (shape_specular_color_at(hit, p, &spec_color))
 		spec = &spec_color;
-	if (fl && hit == s->floor) {
+	if (fl && fl->moved && hit == s->floor) {
 		double i = floor((p.x - fl->ox) / fl->cell), j = floor((p.y - fl->oy) / fl->cell);
 		double white = fmod(fabs(i + j), 2.0) == 0.0 ? 1.0 : 0.0;
 		base = color_make(white, white, white);

@@ -42,13 +42,18 @@ enum shade_rule {
 struct color shade_rules_trace(const struct scene *s, const struct render_settings *rs,
 			       unsigned rules, const struct ray *r, int level);
 
-/* Another floor in place of the scene's (the students' other floors):
- * the plane z = 0 within |x - cx|, |y - cy| < half (INFINITY: to the
- * horizon), cell (i, j) = (floor((x - ox) / cell), floor((y - oy) /
- * cell)), white when i + j is even, black otherwise, with the scene
- * floor's finish. */
+/* Another floor in place of the scene's (the students' other floors).
+ * When moved: the plane z = 0 within |x - cx|, |y - cy| < half
+ * (INFINITY: to the horizon), cell (i, j) = (floor((x - ox) / cell),
+ * floor((y - oy) / cell)), white when i + j is even, black otherwise;
+ * else the scene floor's shape and cells.  When own_finish: finish in
+ * place of the scene floor's coefficients and shininess (its colour
+ * stays the cells'). */
 struct shade_floor {
+	bool moved;
 	double half, cell, ox, oy, cx, cy;
+	bool own_finish;
+	struct material finish;
 };
 
 /* shade_rules_trace with the floor fl (NULL: the scene's own). */

@@ -228,6 +228,22 @@ python3 "$REF" "$SCENE" "$I/cells.ppm" --size 64 --floor 1000,40
 run compare -q --json -s 64 --no-camera-fit "$SCENE" "$I/cells.ppm"
 json floor-cell 'assert j["first"] == ["floor-cell"] and j["causes"][0]["explains"], j["first"]'
 
+# --- The floor's own finish (a student's coefficients, kawshikbuet17's
+# 0.25 each and shininess 15): fitted, and named with those values; with
+# spotlights' cones 2.47 times narrower (an unbracketed PI macro) at
+# sr20's camera, the pair, the finish fitted again with the cones (the
+# first fit, pulled by them, took ks 0.2).
+python3 "$REF" "$SCENE" "$I/finish.ppm" --size 96 --floor-finish 0.25,0.25,0.25,0.25,15
+run compare -q --json -s 96 --no-camera-fit "$SCENE" "$I/finish.ppm"
+json floor-finish 'assert j["first"] == ["floor-finish"] and j["causes"][0]["explains"], j["causes"][:2]
+assert "ka kd ks kr 0.25 0.25 0.25 0.25, shininess 15, not 0.4 0.2 0.2 0.2, 1" in j["causes"][0]["with"], j["causes"][0]'
+SR20=(--eye 100,100,43 --look 29.3,29.3,43 --up 0,0,1 --fov 80)
+python3 "$REF" "$DATA/student-renders/sr20-scene.txt" "$I/sr20-finish.ppm" --size 96 "${SR20[@]}" \
+	--floor-finish 0.25,0.25,0.25,0.25,15 --mistake spot-pi-macro
+run compare -q --json -s 96 --no-camera-fit "${SR20[@]}" "$DATA/student-renders/sr20-scene.txt" "$I/sr20-finish.ppm"
+json finish-with-cone 'assert j["first"] == ["spot-cone+floor-finish"] and j["best"]["explains"], j["causes"][:2]
+assert "PI a macro" in j["causes"][0]["with"] and "0.25 0.25 0.25 0.25, shininess 15" in j["causes"][0]["with"], j["causes"][0]'
+
 # --- Object by object: one sphere's colour changed in the file.
 # (Sphere 1, green, made magenta: its reflections change a little of the
 # others too.)

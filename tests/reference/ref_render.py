@@ -8,6 +8,7 @@ at random.
                 [--look X,Y,Z] [--up X,Y,Z] [--fov DEG] [--clamp level|final]
                 [--no-floor] [--floor W,T] [--dialect auto|classic|spot|pyramid|nearfar]
                 [--samples N] [--floor-texture WHITE[,BLACK]] [--glass I[:IOR[:KT]],...]
+                [--floor-finish KA,KD,KS,KR,SHINE]
                 [--mistake NAME] [--truncate]   (OUT ending .bmp: a 24-bit BMP)
 
 --mistake NAME renders the image a student's program with that one mistake
@@ -35,7 +36,9 @@ the same render converted that way too, without tracing again.
 The view the file gives (the dialect's field of view, nearfar's near plane,
 aspect and checkerboard) applies unless an option says otherwise: --fov
 replaces the field of view, --floor W,T puts the classic floor of that size
-in place of the file's, --no-floor removes it.
+in place of the file's, --no-floor removes it.  --floor-finish gives the
+floor a student's own coefficients and shininess (the checker's colours
+stay).
 
 The extensions, from README's rules: --samples N averages an N x N grid of
 rays through the sub-pixel centres, each clamped; --floor-texture puts an
@@ -573,7 +576,8 @@ def pixel_byte(ch):
 def main(argv):
     args = {'--size': None, '--recursion': None, '--eye': '0,-200,10', '--look': '0,0,0',
             '--up': '0,0,1', '--fov': None, '--clamp': 'level', '--floor': None,
-            '--dialect': 'auto', '--samples': '1', '--floor-texture': None, '--glass': None}
+            '--dialect': 'auto', '--samples': '1', '--floor-texture': None, '--glass': None,
+            '--floor-finish': None}
     global MISTAKES, TRUNCATE
     pos, no_floor, i, also = [], False, 1, []
     while i < len(argv):
@@ -611,6 +615,9 @@ def main(argv):
     if args['--floor']:
         w, cell = (float(v) for v in args['--floor'].split(','))
         floor = dict(width=w, cell=cell, **CLASSIC_FLOOR)
+    if args['--floor-finish']:
+        k = [float(v) for v in args['--floor-finish'].split(',')]
+        floor = dict(floor, ka=k[0], kd=k[1], ks=k[2], kr=k[3], shine=k[4])
     for item in (args['--glass'].split(',') if args['--glass'] else []):
         f = item.split(':')
         o = objs[int(f[0]) - 1]

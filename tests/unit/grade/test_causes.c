@@ -161,12 +161,17 @@ static void test_causes_spot_cone(void **state)
 static void test_causes_other_floor_in_the_trace(void **state)
 {
 	struct job_setup j;
-	struct shade_floor same = { 500.0, 20.0, -500.0, -500.0, 0.0, 0.0 }, endless = { INFINITY, 20.0, -500.0, -500.0, 0.0, 0.0 };
+	struct shade_floor same = { .moved = true, .half = 500.0, .cell = 20.0, .ox = -500.0,
+				    .oy = -500.0 };
+	struct shade_floor endless = { .moved = true, .half = INFINITY, .cell = 20.0, .ox = -500.0,
+				       .oy = -500.0 };
+	struct shade_floor own = { .own_finish = true };
 	struct render_settings rs = { 4, RT_CLAMP_LEVEL };
 	int k;
 
 	(void)state;
 	job_make(&j, 32, true);
+	own.finish = j.s->floor->mat;
 	support_rng_seed(3);
 	for (k = 0; k < 2000; k++) {
 		struct ray r = support_ray(support_uniform(-300, 300), support_uniform(-300, 300), support_uniform(5, 200), 0, 0, 0);
@@ -178,6 +183,24 @@ static void test_causes_other_floor_in_the_trace(void **state)
 		a = shade_rules_trace(j.s, &rs, 0, &r, 1);
 		b = shade_rules_trace_floor(j.s, &rs, 0, &same, &r, 1);
 		assert_memory_equal(&a, &b, sizeof(a));
+		b = shade_rules_trace_floor(j.s, &rs, 0, &own, &r, 1);
+		assert_memory_equal(&a, &b, sizeof(a));
+	}
+	{
+		/* Ambient 1 alone: a white cell's colour is 1, a black one's 0,
+		 * whatever the lights: (-399.5, -399.5) is in cell (5, 5),
+		 * (-379.5, -399.5) in (6, 5), far from every object. */
+		struct shade_floor ambient = { .own_finish = true };
+		struct ray down = support_ray(-399.5, -399.5, 300.0, 0, 0, -1);
+		struct color c;
+
+		ambient.finish.ka = 1.0;
+		c = shade_rules_trace_floor(j.s, &rs, 0, &ambient, &down, 1);
+		assert_near(c.r, 1.0, 0.0);
+		assert_near(c.b, 1.0, 0.0);
+		down = support_ray(-379.5, -399.5, 300.0, 0, 0, -1);
+		c = shade_rules_trace_floor(j.s, &rs, 0, &ambient, &down, 1);
+		assert_near(c.g, 0.0, 0.0);
 	}
 	{
 		/* From high above, straight down on (700.5, 10.5): no floor

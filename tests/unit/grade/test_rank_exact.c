@@ -34,7 +34,8 @@ static void submission(const struct grade_job *job, unsigned rules, const struct
 static void test_rank_exact_figures(void **state)
 {
 	/* Two rules; a floor 400 wide with cells of 10 (two floor causes). */
-	static const struct shade_floor small = { 200.0, 10.0, -200.0, -200.0, 0.0, 0.0 };
+	static const struct shade_floor small = { .moved = true, .half = 200.0, .cell = 10.0,
+						  .ox = -200.0, .oy = -200.0 };
 	static const struct {
 		unsigned rules;
 		const struct shade_floor *floor;

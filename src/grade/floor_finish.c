@@ -1,0 +1,483 @@
+/* The floor's finish found from a submission: students give the floor
+ * coefficients of their own (0.25 each and shininess 15; 0.5 0.3 0.4 0.2
+ * and 10), which change every floor pixel and hide every other
+ * difference.  On the floor's own pixels the colour is linear in the
+ * four coefficients, for a shininess:
+ *
+ *   C = clamp(ka A + kd D + ks S(n) + kr R)
+ *
+ * where A is the cell's colour, D and S(n) the lights' diffuse and
+ * specular sums (shadows and spotlights as the reference has them) and R
+ * the colour the reflected ray brings back.  Each basis is the renderer's
+ * own sum with one coefficient 1 and the others 0 (unclamped where it may
+ * pass 1: no reflection follows), so the fit and the render share one
+ * formula.  A least-squares fit over a sample of the floor's pixels, for
+ * each shininess of a list, gives the finish; RT_CAUSE_FLOOR_FINISH
+ * renders it, and the ranking decides whether it explains the image. */
+#include <math.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "grade/grade_impl.h"
+#include "scene/scene_impl.h"
+
+/* The floor pixels fitted at most (a sample, every k-th in raster order). */
+#define FINISH_MAX_PIXELS 4096
+/* ... and at least (fewer: the floor shows too little to fit on). */
+#define FINISH_MIN_PIXELS 64
+/* The exponents tried: the ones students write. */
+static const double finish_shininess[] = { 1, 2, 3, 4, 5, 8, 10, 12, 15, 20, 25, 30, 40, 50, 64,
+					   80, 100 };
+#define FINISH_N_SHINE (sizeof(finish_shininess) / sizeof(finish_shininess[0]))
+/* The bases: ambient, diffuse, reflection, then a specular one for each
+ * exponent. */
+enum { FINISH_A, FINISH_D, FINISH_R, FINISH_S0, FINISH_BASES = FINISH_S0 + FINISH_N_SHINE };
+enum { FINISH_KA, FINISH_KD, FINISH_KS, FINISH_KR, FINISH_K };
+
+/* A finish is taken only when its squared error on the sample is at most
+ * this share of the scene's own finish's. */
+#define FINISH_BETTER 0.7
+/* The first form's coefficients are rounded to this step (students
+ * write 0.25, 0.4): where the fit is pulled by another difference (a
+ * spotlight's cone), the round values are often the student's. */
+#define FINISH_ROUND_STEP 0.05
+
+struct finish_sample {
+	size_t n;			/* pixels */
+	float *basis;			/* FINISH_BASES x n x 3 */
+	float *target;			/* n x 3, 0..1 */
+	uint8_t *use;			/* n x 3: the row counts in the fit */
+};
+
+static float *finish_basis(const struct finish_sample *fs, int b)
+{
+	return fs->basis + (size_t)b * fs->n * 3;
+}
+
+/* The bases' colours along the rays of the sample's pixels, rendered as
+ * the variant with renders (its rules, settings and floor's shape). */
+static void finish_trace(const struct grade_job *job, const struct grade_variant *with,
+			 const int32_t *px, struct finish_sample *fs)
+{
+	const struct scene *s = job->scene;
+	struct shade_floor fl = with->floor;
+	struct render_settings unclamped = with->settings;
+	size_t i;
+	int b;
+
+	fl.own_finish = true;
+	unclamped.clamp = RT_CLAMP_FINAL;
+	for (b = 0; b < FINISH_BASES; b++) {
+		float *out = finish_basis(fs, b);
+		/* The reflection keeps the clamping below the floor; the other
+		 * bases have no reflection, and unclamped they are the sums
+		 * themselves. */
+		const struct render_settings *rs = b == FINISH_R ? &with->settings : &unclamped;
+
+		memset(&fl.finish, 0, sizeof(fl.finish));
+		fl.finish.color = s->floor->mat.color;
+		fl.finish.ior = s->floor->mat.ior;
+		if (b == FINISH_A)
+			fl.finish.ka = 1.0;
+		else if (b == FINISH_D)
+			fl.finish.kd = 1.0;
+		else if (b == FINISH_R)
+			fl.finish.kr = 1.0;
+		else {
+			fl.finish.ks = 1.0;
+			fl.finish.shininess = finish_shininess[b - FINISH_S0];
+		}
+		for (i = 0; i < fs->n; i++) {
+			struct ray r = camera_ray(job->camera, px[2 * i], px[2 * i + 1]);
+			struct color c = shade_rules_trace_floor(s, rs, with->rules, &fl, &r, 1);
+
+			out[3 * i] = (float)c.r;
+			out[3 * i + 1] = (float)c.g;
+			out[3 * i + 2] = (float)c.b;
+		}
+	}
+}
+
+/* Leaves out of the fit the pixels on a cell's edge: those whose cell
+ * colour (the ambient basis) is not their four neighbours' too.  A
+ * camera a fraction of a pixel off, or rays through the pixels' corners,
+ * changes their colour wholly; on a small image that is most of the
+ * floor, and a fit on them finds a finish that is none. */
+static void finish_inside_cells(const struct grade_job *job, const struct grade_variant *with,
+				const int32_t *px, struct finish_sample *fs)
+{
+	static const int dx[4] = { 1, -1, 0, 0 }, dy[4] = { 0, 0, 1, -1 };
+	struct shade_floor fl = with->floor;
+	const float *a = finish_basis(fs, FINISH_A);
+	size_t i;
+	int k;
+
+	fl.own_finish = true;
+	memset(&fl.finish, 0, sizeof(fl.finish));
+	fl.finish.ka = 1.0;
+	for (i = 0; i < fs->n; i++)
+		for (k = 0; k < 4; k++) {
+			struct ray r = camera_ray(job->camera, px[2 * i] + dx[k], px[2 * i + 1] + dy[k]);
+			struct color c = shade_rules_trace_floor(job->scene, &with->settings, with->rules,
+								 &fl, &r, 1);
+
+			if ((float)c.r != a[3 * i] || (float)c.g != a[3 * i + 1] ||
+			    (float)c.b != a[3 * i + 2]) {
+				memset(fs->use + 3 * i, 0, 3);
+				break;
+			}
+		}
+}
+
+static double finish_clamp(double v)
+{
+	return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+}
+
+/* The model's colour of row j (pixel j / 3, channel j % 3) for k with
+ * specular basis sb. */
+static double finish_model(const struct finish_sample *fs, int sb, const double k[FINISH_K],
+			   size_t j)
+{
+	return finish_clamp(k[FINISH_KA] * finish_basis(fs, FINISH_A)[j] +
+			    k[FINISH_KD] * finish_basis(fs, FINISH_D)[j] +
+			    k[FINISH_KS] * finish_basis(fs, sb)[j] +
+			    k[FINISH_KR] * finish_basis(fs, FINISH_R)[j]);
+}
+
+/* The squared error of k over every row in use (the model clamped). */
+static double finish_error(const struct finish_sample *fs, int sb, const double k[FINISH_K])
+{
+	double e = 0.0, r;
+	size_t j;
+
+	for (j = 0; j < 3 * fs->n; j++)
+		if (fs->use[j]) {
+			r = finish_model(fs, sb, k, j) - fs->target[j];
+			e += r * r;
+		}
+	return e;
+}
+
+/* Solves the m x m system a x = y (row stride FINISH_K) by elimination
+ * with partial pivoting; false when it is singular. */
+static bool finish_solve(double a[FINISH_K][FINISH_K], double y[FINISH_K], int m, double x[FINISH_K])
+{
+	int i, j, c, p;
+
+	for (c = 0; c < m; c++) {
+		p = c;
+		for (i = c + 1; i < m; i++)
+			if (fabs(a[i][c]) > fabs(a[p][c]))
+				p = i;
+		if (!(fabs(a[p][c]) > 1e-12))
+			return false;
+		for (j = 0; j < m; j++) {
+			double t = a[c][j];
+			a[c][j] = a[p][j];
+			a[p][j] = t;
+		}
+		{
+			double t = y[c];
+			y[c] = y[p];
+			y[p] = t;
+		}
+		for (i = c + 1; i < m; i++) {
+			double f = a[i][c] / a[c][c];
+			for (j = c; j < m; j++)
+				a[i][j] -= f * a[c][j];
+			y[i] -= f * y[c];
+		}
+	}
+	for (i = m - 1; i >= 0; i--) {
+		double v = y[i];
+		for (j = i + 1; j < m; j++)
+			v -= a[i][j] * x[j];
+		x[i] = v / a[i][i];
+	}
+	return true;
+}
+
+/* The least-squares coefficients (>= 0) over the rows in use whose
+ * target is not saturated (there the model is unclamped and linear):
+ * the normal equations, a coefficient that comes out negative held at 0
+ * and the rest solved again. */
+static void finish_least_squares(const struct finish_sample *fs, int sb, double k[FINISH_K])
+{
+	const float *col[FINISH_K];
+	bool held[FINISH_K] = { false, false, false, false };
+	int round, i, j, m, idx[FINISH_K];
+	size_t r;
+
+	col[FINISH_KA] = finish_basis(fs, FINISH_A);
+	col[FINISH_KD] = finish_basis(fs, FINISH_D);
+	col[FINISH_KS] = finish_basis(fs, sb);
+	col[FINISH_KR] = finish_basis(fs, FINISH_R);
+	for (round = 0; round < FINISH_K; round++) {
+		double a[FINISH_K][FINISH_K], y[FINISH_K], x[FINISH_K];
+		int worst = -1;
+
+		for (m = 0, i = 0; i < FINISH_K; i++)
+			if (!held[i])
+				idx[m++] = i;
+		memset(a, 0, sizeof(a));
+		memset(y, 0, sizeof(y));
+		for (r = 0; r < 3 * fs->n; r++) {
+			if (!fs->use[r] || fs->target[r] >= 1.0f)
+				continue;
+			for (i = 0; i < m; i++) {
+				y[i] += (double)col[idx[i]][r] * fs->target[r];
+				for (j = 0; j < m; j++)
+					a[i][j] += (double)col[idx[i]][r] * col[idx[j]][r];
+			}
+		}
+		for (i = 0; i < FINISH_K; i++)
+			k[i] = 0.0;
+		if (m == 0 || !finish_solve(a, y, m, x))
+			return;
+		for (i = 0; i < m; i++) {
+			k[idx[i]] = x[i];
+			if (x[i] < 0.0 && (worst < 0 || x[i] < k[worst]))
+				worst = idx[i];
+		}
+		if (worst < 0)
+			return;
+		held[worst] = true;
+	}
+}
+
+/* Leaves out of the fit the rows whose error under k is far beyond the
+ * rest (a pixel on a cell's edge another colour, an object's edge): more
+ * than 4 times the median error, and 8 levels. */
+static void finish_trim(struct finish_sample *fs, int sb, const double k[FINISH_K], float *tmp)
+{
+	size_t j, m = 0, lo, hi;
+	double median, cut;
+
+	for (j = 0; j < 3 * fs->n; j++)
+		if (fs->use[j])
+			tmp[m++] = (float)fabs(finish_model(fs, sb, k, j) - fs->target[j]);
+	if (m == 0)
+		return;
+	/* The median by a partial quickselect over tmp[0..m). */
+	lo = 0;
+	hi = m - 1;
+	while (lo < hi) {
+		float pivot = tmp[(lo + hi) / 2], t;
+		size_t a = lo, b = hi;
+
+		while (a <= b) {
+			while (tmp[a] < pivot)
+				a++;
+			while (tmp[b] > pivot)
+				b--;
+			if (a <= b) {
+				t = tmp[a];
+				tmp[a] = tmp[b];
+				tmp[b] = t;
+				a++;
+				if (b == 0)
+					break;
+				b--;
+			}
+		}
+		if (m / 2 <= b)
+			hi = b;
+		else if (m / 2 >= a)
+			lo = a;
+		else
+			break;
+	}
+	median = tmp[m / 2];
+	cut = fmax(4.0 * median, 8.0 / 255.0);
+	for (j = 0; j < 3 * fs->n; j++)
+		if (fs->use[j] && fabs(finish_model(fs, sb, k, j) - fs->target[j]) > cut)
+			fs->use[j] = 0;
+}
+
+
+/* The basis of the exponent nearest n (the scene's own finish). */
+static int finish_basis_of(double n)
+{
+	size_t i, best = 0;
+
+	for (i = 1; i < FINISH_N_SHINE; i++)
+		if (fabs(finish_shininess[i] - n) < fabs(finish_shininess[best] - n))
+			best = i;
+	return FINISH_S0 + (int)best;
+}
+
+/* Whether pixel i may be in the sample: the floor's, not marked in skip,
+ * its four neighbours the floor's too. */
+static bool finish_candidate(const int32_t *ids, const uint8_t *skip, int w, int h, size_t i)
+{
+	const size_t x = i % (size_t)w, y = i / (size_t)w;
+
+	return ids[i] == GRADE_ID_FLOOR && !(skip && skip[i]) && x > 0 && y > 0 &&
+	       x + 1 < (size_t)w && y + 1 < (size_t)h && ids[i - 1] == GRADE_ID_FLOOR &&
+	       ids[i + 1] == GRADE_ID_FLOOR && ids[i - (size_t)w] == GRADE_ID_FLOOR &&
+	       ids[i + (size_t)w] == GRADE_ID_FLOOR;
+}
+
+/* The sample: every k-th floor pixel that finish_candidate takes; 0 when
+ * the floor shows too little to fit four numbers on. */
+static int finish_sample_of(const struct grade_job *job, const struct image *sub,
+			    const uint8_t *skip, bool truncated, struct finish_sample *fs,
+			    int32_t **px_out, struct diag *d)
+{
+	const size_t total = (size_t)sub->width * (size_t)sub->height;
+	int32_t *ids = rt_reallocarray(NULL, total, sizeof(*ids)), *px = NULL;
+	size_t i, count = 0, step, n = 0;
+	int rc, c;
+
+	if (!ids)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	if ((rc = grade_object_ids(job, ids, d)) < 0)
+		goto out;
+	for (i = 0; i < total; i++)
+		count += finish_candidate(ids, skip, sub->width, sub->height, i);
+	rc = 0;
+	if (count < FINISH_MIN_PIXELS)
+		goto out;
+	step = (count + FINISH_MAX_PIXELS - 1) / FINISH_MAX_PIXELS;
+	fs->n = (count + step - 1) / step;
+	if (!(px = rt_reallocarray(NULL, 2 * fs->n, sizeof(*px))) ||
+	    !(fs->basis = rt_reallocarray(NULL, (size_t)FINISH_BASES * 3 * fs->n, sizeof(float))) ||
+	    !(fs->target = rt_reallocarray(NULL, 3 * fs->n, sizeof(float))) ||
+	    !(fs->use = rt_malloc(3 * fs->n))) {
+		rc = diag_fail(d, RT_E_NOMEM, "out of memory for the floor's finish");
+		goto out;
+	}
+	for (i = 0, count = 0; i < total && n < fs->n; i++) {
+		if (!finish_candidate(ids, skip, sub->width, sub->height, i) || count++ % step)
+			continue;
+		px[2 * n] = (int32_t)(i % (size_t)sub->width);
+		px[2 * n + 1] = (int32_t)(i / (size_t)sub->width);
+		for (c = 0; c < 3; c++) {
+			uint8_t b = sub->pixels[3 * i + c];
+
+			fs->target[3 * n + c] = b == 255 ? 1.0f
+				: (float)((b + (truncated ? 0.5 : 0.0)) / 255.0);
+			fs->use[3 * n + c] = 1;
+		}
+		n++;
+	}
+	fs->n = n;
+	rc = 1;
+out:
+	rt_free(ids);
+	if (rc <= 0) {
+		rt_free(px);
+		px = NULL;
+	}
+	*px_out = px;
+	return rc;
+}
+
+/* v, rounded to FINISH_ROUND_STEP when round. */
+static double finish_value(double v, bool round)
+{
+	return round ? FINISH_ROUND_STEP * floor(v / FINISH_ROUND_STEP + 0.5) : v;
+}
+
+static bool finish_same(const struct material *a, const struct material *b)
+{
+	return a->ka == b->ka && a->kd == b->kd && a->ks == b->ks && a->kr == b->kr &&
+	       a->shininess == b->shininess;
+}
+
+/* The fit on the sample (bases traced, rows in use marked): for each
+ * exponent the least squares, then again without the rows far off under
+ * the best (cells' and objects' edges, other objects' reflections); the
+ * finishes into job when the best fits clearly better than own. */
+static void finish_fit(struct finish_sample *fs, float *tmp, const struct material *own,
+		       struct grade_job *job)
+{
+	double k[FINISH_K], best_k[FINISH_K], e, best_e = INFINITY;
+	const double own_k[FINISH_K] = { own->ka, own->kd, own->ks, own->kr };
+	int sb, best_sb = FINISH_S0, pass, form;
+
+	for (pass = 0; pass < 2; pass++) {
+		best_e = INFINITY;
+		for (sb = FINISH_S0; sb < FINISH_BASES; sb++) {
+			finish_least_squares(fs, sb, k);
+			if ((e = finish_error(fs, sb, k)) < best_e) {
+				best_e = e;
+				best_sb = sb;
+				memcpy(best_k, k, sizeof(k));
+			}
+		}
+		if (pass == 0)
+			finish_trim(fs, best_sb, best_k, tmp);
+	}
+	if (!(best_e <= FINISH_BETTER * finish_error(fs, finish_basis_of(own->shininess), own_k)))
+		return;
+	for (form = 0; form < 2; form++) {
+		struct material *m = &job->floor_finishes[job->n_floor_finishes];
+
+		*m = *own;
+		m->ka = finish_value(best_k[FINISH_KA], form == 0);
+		m->kd = finish_value(best_k[FINISH_KD], form == 0);
+		m->ks = finish_value(best_k[FINISH_KS], form == 0);
+		m->kr = finish_value(best_k[FINISH_KR], form == 0);
+		m->shininess = m->ks > 0.0 ? finish_shininess[best_sb - FINISH_S0] : own->shininess;
+		if (!finish_same(m, own) && (form == 0 || !finish_same(m, &job->floor_finishes[0])))
+			job->n_floor_finishes++;
+	}
+}
+
+/* Whether the job's image can be fitted with form also_form of cause
+ * also rendered too (RT_CAUSE_NONE: the reference), its render into
+ * with: one ray a pixel, a plain checker (a texture's cells are not the
+ * checker's colours), a cause the rules' trace makes whole (not a
+ * transform, the pixels' corners or a colour curve). */
+static bool finish_fits(const struct grade_job *job, const struct image *sub,
+			enum grade_cause also, int also_form, struct grade_variant *with)
+{
+	const struct scene *s = job->scene;
+	struct color spec;
+
+	grade_variant_plain(job, with);
+	if (also != RT_CAUSE_NONE &&
+	    (also == RT_CAUSE_FLOOR_FINISH || !grade_variant_of(job, also, also_form, with) ||
+	     with->map || with->corner || with->gamma || with->wrap))
+		return false;
+	return s->floor && job->samples <= 1 && sub->width == job->camera->width &&
+	       sub->height == job->camera->height &&
+	       !shape_specular_color_at(s->floor, vec3_make(0.0, 0.0, 0.0), &spec);
+}
+
+int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const uint8_t *skip,
+			   bool truncated, enum grade_cause also, int also_form, struct diag *d)
+{
+	struct grade_variant with;
+	struct finish_sample fs;
+	int32_t *px = NULL;
+	float *tmp = NULL;
+	size_t i, used = 0;
+	int rc;
+
+	job->n_floor_finishes = 0;
+	memset(&fs, 0, sizeof(fs));
+	if (!finish_fits(job, sub, also, also_form, &with))
+		return 0;
+	if ((rc = finish_sample_of(job, sub, skip, truncated, &fs, &px, d)) <= 0)
+		goto out;
+	if (!(tmp = rt_reallocarray(NULL, 3 * fs.n, sizeof(float)))) {
+		rc = diag_fail(d, RT_E_NOMEM, "out of memory for the floor's finish");
+		goto out;
+	}
+	finish_trace(job, &with, px, &fs);
+	finish_inside_cells(job, &with, px, &fs);
+	for (i = 0; i < 3 * fs.n; i++)
+		used += fs.use[i];
+	if (used >= 3 * FINISH_MIN_PIXELS)
+		finish_fit(&fs, tmp, &job->scene->floor->mat, job);
+out:
+	rt_free(px);
+	rt_free(tmp);
+	rt_free(fs.basis);
+	rt_free(fs.target);
+	rt_free(fs.use);
+	return rc < 0 ? rc : 0;
+}
