@@ -35,8 +35,12 @@ enum { FINISH_A, FINISH_D, FINISH_R, FINISH_S0, FINISH_BASES = FINISH_S0 + FINIS
 enum { FINISH_KA, FINISH_KD, FINISH_KS, FINISH_KR, FINISH_K };
 
 /* A finish is taken only when its squared error on the sample is at most
- * this share of the scene's own finish's. */
+ * this share of the scene's own finish's, and it explains the floor to
+ * this root mean square (levels, on the rows kept): a student's finish
+ * with a narrower spotlight cone is 2.4 off, a floor of another shape
+ * or seen from another camera 85 to 95 whatever its finish. */
 #define FINISH_BETTER 0.7
+#define FINISH_MAX_RMS 16.0
 /* The first form's coefficients are rounded to this step (students
  * write 0.25, 0.4): where the fit is pulled by another difference (a
  * spotlight's cone), the round values are often the student's. */
@@ -396,6 +400,7 @@ static void finish_fit(struct finish_sample *fs, float *tmp, const struct materi
 	double k[FINISH_K], best_k[FINISH_K], e, best_e = INFINITY;
 	const double own_k[FINISH_K] = { own->ka, own->kd, own->ks, own->kr };
 	int sb, best_sb = FINISH_S0, pass, form;
+	size_t j, used = 0;
 
 	for (pass = 0; pass < 2; pass++) {
 		best_e = INFINITY;
@@ -410,7 +415,10 @@ static void finish_fit(struct finish_sample *fs, float *tmp, const struct materi
 		if (pass == 0)
 			finish_trim(fs, best_sb, best_k, tmp);
 	}
-	if (!(best_e <= FINISH_BETTER * finish_error(fs, finish_basis_of(own->shininess), own_k)))
+	for (j = 0; j < 3 * fs->n; j++)
+		used += fs->use[j];
+	if (!(best_e <= FINISH_BETTER * finish_error(fs, finish_basis_of(own->shininess), own_k)) ||
+	    !(best_e <= used * (FINISH_MAX_RMS / 255.0) * (FINISH_MAX_RMS / 255.0)))
 		return;
 	for (form = 0; form < 2; form++) {
 		struct material *m = &job->floor_finishes[job->n_floor_finishes];
