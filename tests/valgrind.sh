@@ -188,6 +188,12 @@ for f in truncated.bmp truncated.ppm truncated-ascii.ppm bad-sample.ppm empty.pn
 	vg "compare $f" 1 compare -q -s 72 -j 2 "$ROOT/scenes/scene.txt" "$CI/$f"
 done
 vg "compare another size" 0 compare -q -s 40 "$ROOT/scenes/scene.txt" "$CI/ascii.ppm"
+# The floor's own finish with the highlight left white: the finish fitted,
+# the causes ranked, the finish fitted again with the highlight, ranked
+# again (the independent renderer's image).
+python3 "$ROOT/tests/reference/ref_render.py" "$ROOT/scenes/scene.txt" "$CI/finish.ppm" --size 48 \
+	--floor-finish 0.25,0.25,0.25,0.25,15 --mistake white-highlight
+vg "compare the floor's finish and a mistake" 3 compare -q -s 48 -j 2 --json --no-camera-fit "$ROOT/scenes/scene.txt" "$CI/finish.ppm"
 # A file the strict reading refuses, read again by the count-driven rule
 # (the held notes), and one that neither reading takes.
 vg "compare strict refused" 3 compare -s 72 --no-camera-fit "$DATA/course-files/thr0m3l.txt" "$CI/bmp24.bmp"
