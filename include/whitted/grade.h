@@ -167,24 +167,26 @@ int grade_rank_causes(const struct grade_job *job, const struct image *ref,
  * coefficients, shininess) that brings the job's render nearest sub on a
  * sample of the floor's pixels (those skip, which may be NULL, does not
  * mark; sub's bytes taken as truncated or rounded): a least-squares fit
- * for each of a list of exponents, with form also_form of cause `also`
- * rendered too (RT_CAUSE_NONE: the reference; a second cause pulls a fit
- * made without it).  Sets job->floor_finishes (the values rounded to
- * 0.05, then as they came when they differ) when it fits clearly better
- * than the scene floor's own finish (RT_CAUSE_FLOOR_FINISH then renders
+ * for each of a list of exponents, with the ranked cause `also` (one or a
+ * pair, in its forms) rendered too (NULL: the reference; another cause
+ * pulls a fit made without it, and the tiles swapped defeat it).  Sets
+ * job->floor_finishes (the values rounded to 0.05, then as they came when
+ * they differ) when it fits clearly better than the scene floor's own
+ * finish and explains the floor (RT_CAUSE_FLOOR_FINISH then renders
  * them), else job->n_floor_finishes to 0; none for a textured floor,
- * --samples, or a cause the rules' trace does not render whole.  0, or
+ * --samples, or causes the rules' trace does not render whole.  0, or
  * < 0 with d filled. */
 int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const uint8_t *skip,
-			   bool truncated, enum grade_cause also, int also_form, struct diag *d);
+			   bool truncated, const struct grade_rank *also, struct diag *d);
 
 /* grade_rank_causes with the floor's finish fitted first
  * (grade_fit_floor_finish, sub's bytes taken as truncated or rounded);
- * when the likeliest is then the finish with another cause, the finish
- * is fitted again with that cause rendered too and the causes ranked
- * again, which stands when its best comes nearer.  The job keeps the
- * finishes its ranking rendered (for grade_cause_detail and
- * grade_cause_image). */
+ * then the finish is fitted again with the likeliest rendered too (the
+ * cause a finish is paired with, or the likeliest without one: the tiles
+ * swapped hide a finish from a fit made without them), and when one is
+ * found the causes are ranked again, which stands when its best comes
+ * nearer.  The job keeps the finishes its ranking rendered (for
+ * grade_cause_detail and grade_cause_image). */
 int grade_rank_with_finish(struct grade_job *job, const struct image *ref,
 			   const struct image *tref, const struct image *sub, const uint8_t *skip,
 			   bool truncated, struct grade_rank out[GRADE_MAX_RANKS], size_t *n,

@@ -434,29 +434,39 @@ static void finish_fit(struct finish_sample *fs, float *tmp, const struct materi
 	}
 }
 
-/* Whether the job's image can be fitted with form also_form of cause
- * also rendered too (RT_CAUSE_NONE: the reference), its render into
- * with: one ray a pixel, a plain checker (a texture's cells are not the
- * checker's colours), a cause the rules' trace makes whole (not a
- * transform, the pixels' corners or a colour curve). */
+/* Whether the job's image can be fitted with the rank's cause (and its
+ * second cause, in their forms) rendered too (NULL: the reference), its
+ * render into with: one ray a pixel, a plain checker (a texture's cells
+ * are not the checker's colours), causes the rules' trace makes whole
+ * (not the finish itself, a transform, the pixels' corners or a colour
+ * curve). */
 static bool finish_fits(const struct grade_job *job, const struct image *sub,
-			enum grade_cause also, int also_form, struct grade_variant *with)
+			const struct grade_rank *also, struct grade_variant *with)
 {
 	const struct scene *s = job->scene;
+	struct grade_variant a, b;
 	struct color spec;
 
 	grade_variant_plain(job, with);
-	if (also != RT_CAUSE_NONE &&
-	    (also == RT_CAUSE_FLOOR_FINISH || !grade_variant_of(job, also, also_form, with) ||
-	     with->map || with->corner || with->gamma || with->wrap))
-		return false;
+	if (also) {
+		if (also->cause == RT_CAUSE_FLOOR_FINISH || also->also == RT_CAUSE_FLOOR_FINISH ||
+		    !grade_variant_of(job, also->cause, also->form, &a))
+			return false;
+		if (also->also == RT_CAUSE_NONE)
+			*with = a;
+		else if (!grade_variant_of(job, also->also, also->also_form, &b) ||
+			 !grade_variant_combine(&a, &b, with))
+			return false;
+		if (with->map || with->corner || with->gamma || with->wrap)
+			return false;
+	}
 	return s->floor && job->samples <= 1 && sub->width == job->camera->width &&
 	       sub->height == job->camera->height &&
 	       !shape_specular_color_at(s->floor, vec3_make(0.0, 0.0, 0.0), &spec);
 }
 
 int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const uint8_t *skip,
-			   bool truncated, enum grade_cause also, int also_form, struct diag *d)
+			   bool truncated, const struct grade_rank *also, struct diag *d)
 {
 	struct grade_variant with;
 	struct finish_sample fs;
@@ -467,7 +477,7 @@ int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const
 
 	job->n_floor_finishes = 0;
 	memset(&fs, 0, sizeof(fs));
-	if (!finish_fits(job, sub, also, also_form, &with))
+	if (!finish_fits(job, sub, also, &with))
 		return 0;
 	if ((rc = finish_sample_of(job, sub, skip, truncated, &fs, &px, d)) <= 0)
 		goto out;

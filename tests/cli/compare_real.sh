@@ -237,6 +237,14 @@ python3 "$REF" "$SCENE" "$I/finish.ppm" --size 96 --floor-finish 0.25,0.25,0.25,
 run compare -q --json -s 96 --no-camera-fit "$SCENE" "$I/finish.ppm"
 json floor-finish 'assert j["first"] == ["floor-finish"] and j["causes"][0]["explains"], j["causes"][:2]
 assert "ka kd ks kr 0.25 0.25 0.25 0.25, shininess 15, not 0.4 0.2 0.2 0.2, 1" in j["causes"][0]["with"], j["causes"][0]'
+# With the tiles swapped too (thr0m3l's finish, 0.5 0.3 0.4 0.2 and 10):
+# no finish fits the reference's tiles; fitted again with the tiles swapped
+# rendered, the pair, exactly.
+python3 "$REF" "$SCENE" "$I/finish-swapped.ppm" --size 96 --floor-finish 0.5,0.3,0.4,0.2,10 \
+	--mistake floor-swapped
+run compare -q --json -s 96 --no-camera-fit "$SCENE" "$I/finish-swapped.ppm"
+json finish-swapped 'assert j["first"] == ["floor-swapped+floor-finish"] and j["best"]["explains"], j["causes"][:2]
+assert "0.5 0.3 0.4 0.2, shininess 10" in j["causes"][0]["with"], j["causes"][0]'
 SR20=(--eye 100,100,43 --look 29.3,29.3,43 --up 0,0,1 --fov 80)
 python3 "$REF" "$DATA/student-renders/sr20-scene.txt" "$I/sr20-finish.ppm" --size 96 "${SR20[@]}" \
 	--floor-finish 0.25,0.25,0.25,0.25,15 --mistake spot-pi-macro

@@ -84,7 +84,7 @@ static void test_floor_finish_found(void **state)
 		f.kr = finishes[k][3];
 		f.shininess = finishes[k][4];
 		submission(&t.job, &f, 0, &sub);
-		assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, RT_CAUSE_NONE, 0, &d), 0);
+		assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, NULL, &d), 0);
 		assert_true(t.job.n_floor_finishes >= 1);
 		assert_near(got->ka, f.ka, 1e-12);
 		assert_near(got->kd, f.kd, 1e-12);
@@ -109,13 +109,13 @@ static void test_floor_finish_none(void **state)
 	 * difference no finish makes): the scene's own finish fits best. */
 	submission(&t.job, NULL, 0, &sub);
 	t.job.n_floor_finishes = 2;
-	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, RT_CAUSE_NONE, 0, &d), 0);
+	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, NULL, &d), 0);
 	assert_int_equal(t.job.n_floor_finishes, 0);
 	image_free(&sub);
 	/* --samples: not fitted. */
 	submission(&t.job, NULL, RT_RULE_NO_SHADOWS, &sub);
 	t.job.samples = 2;
-	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, RT_CAUSE_NONE, 0, &d), 0);
+	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, NULL, &d), 0);
 	assert_int_equal(t.job.n_floor_finishes, 0);
 	image_free(&sub);
 	scene_destroy(t.s);
@@ -144,7 +144,7 @@ static void test_floor_finish_ranked(void **state)
 	submission(&t.job, &f, RT_RULE_WHITE_SPECULAR, &sub);
 	assert_int_equal(grade_render_reference(&t.job, &ref, &d), 0);
 	assert_int_equal(grade_render_truncated(&t.job, &tref, &d), 0);
-	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, RT_CAUSE_NONE, 0, &d), 0);
+	assert_int_equal(grade_fit_floor_finish(&t.job, &sub, NULL, false, NULL, &d), 0);
 	assert_true(t.job.n_floor_finishes >= 1);
 	assert_int_equal(grade_rank_causes(&t.job, &ref, &tref, &sub, NULL, ranks, &n, &d), 0);
 	assert_true(n > 0);
