@@ -331,7 +331,7 @@ bool grade_variant_of(const struct grade_job *job, enum grade_cause c, int form,
 	case RT_CAUSE_FLOOR_FINISH:
 		/* The scene floor's shape with the finish fitted (its shape's
 		 * parts the scene's, for a floor cause to combine with). */
-		if (form >= job->n_floor_finishes || !grade_floor_as_scene(job, &v->floor))
+		if (form >= job->n_floor_finishes || form >= 2 || !grade_floor_as_scene(job, &v->floor))
 			return false;
 		v->use_rules = true;
 		v->other_floor = true;
@@ -455,7 +455,7 @@ void grade_cause_detail(const struct grade_job *job, enum grade_cause c, int for
 		snprintf(buf, size, "%s", grade_spot_details[form]);
 		break;
 	case RT_CAUSE_FLOOR_FINISH:
-		grade_finish_words(&v.floor.finish, &scene_view_of(job->scene)->floor_mat, buf, size);
+		grade_finish_words(&v.floor.finish, &job->scene->floor->mat, buf, size);
 		break;
 	case RT_CAUSE_CHECKER_PHASE:
 		snprintf(buf, size, form == 0 ? "from the origin" : form == 1

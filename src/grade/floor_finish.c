@@ -11,13 +11,16 @@
  * the colour the reflected ray brings back.  Each basis is the renderer's
  * own sum with one coefficient 1 and the others 0 (unclamped where it may
  * pass 1: no reflection follows), so the fit and the render share one
- * formula.  A least-squares fit over a sample of the floor's pixels, for
+ * formula; the floor seen in reflections (a sphere mirroring it) has the
+ * student's finish too, the scene's in a first fit and that fit's in a
+ * second.  A least-squares fit over a sample of the floor's pixels, for
  * each shininess of a list, gives the finish; RT_CAUSE_FLOOR_FINISH
  * renders it, and the ranking decides whether it explains the image. */
 #include <math.h>
 #include <string.h>
 
 #include "base/alloc.h"
+#include "grade/finish_lsq.h"
 #include "grade/grade_impl.h"
 #include "scene/scene_impl.h"
 
@@ -26,14 +29,9 @@
 /* ... and at least (fewer: the floor shows too little to fit on). */
 #define FINISH_MIN_PIXELS 64
 /* The exponents tried: the ones students write. */
-static const double finish_shininess[] = { 1, 2, 3, 4, 5, 8, 10, 12, 15, 20, 25, 30, 40, 50, 64,
-					   80, 100 };
-#define FINISH_N_SHINE (sizeof(finish_shininess) / sizeof(finish_shininess[0]))
-/* The bases: ambient, diffuse, reflection, then a specular one for each
- * exponent. */
-enum { FINISH_A, FINISH_D, FINISH_R, FINISH_S0, FINISH_BASES = FINISH_S0 + FINISH_N_SHINE };
-enum { FINISH_KA, FINISH_KD, FINISH_KS, FINISH_KR, FINISH_K };
-
+static const double finish_shininess[FINISH_N_SHINE] = {
+	1, 2, 3, 4, 5, 8, 10, 12, 15, 20, 25, 30, 40, 50, 64, 80, 100,
+};
 /* A finish is taken only when its squared error on the sample is at most
  * this share of the scene's own finish's, and it explains the floor to
  * this root mean square (levels, on the rows kept): a student's finish
@@ -46,22 +44,13 @@ enum { FINISH_KA, FINISH_KD, FINISH_KS, FINISH_KR, FINISH_K };
  * spotlight's cone), the round values are often the student's. */
 #define FINISH_ROUND_STEP 0.05
 
-struct finish_sample {
-	size_t n;			/* pixels */
-	float *basis;			/* FINISH_BASES x n x 3 */
-	float *target;			/* n x 3, 0..1 */
-	uint8_t *use;			/* n x 3: the row counts in the fit */
-};
-
-static float *finish_basis(const struct finish_sample *fs, int b)
-{
-	return fs->basis + (size_t)b * fs->n * 3;
-}
-
 /* The bases' colours along the rays of the sample's pixels, rendered as
- * the variant with renders (its rules, settings and floor's shape). */
+ * the variant with renders (its rules, settings and floor's shape), the
+ * floor seen in reflections with the finish deeper (the bases are the
+ * floor's first hit only); from basis `first` on. */
 static void finish_trace(const struct grade_job *job, const struct grade_variant *with,
-			 const int32_t *px, struct finish_sample *fs)
+			 const struct material *deeper, int first, const int32_t *px,
+			 struct finish_sample *fs)
 {
 	const struct scene *s = job->scene;
 	struct shade_floor fl = with->floor;
@@ -70,8 +59,10 @@ static void finish_trace(const struct grade_job *job, const struct grade_variant
 	int b;
 
 	fl.own_finish = true;
+	fl.own_deeper = true;
+	fl.deeper = *deeper;
 	unclamped.clamp = RT_CLAMP_FINAL;
-	for (b = 0; b < FINISH_BASES; b++) {
+	for (b = first; b < FINISH_BASES; b++) {
 		float *out = finish_basis(fs, b);
 		/* The reflection keeps the clamping below the floor; the other
 		 * bases have no reflection, and unclamped they are the sums
@@ -102,8 +93,9 @@ static void finish_trace(const struct grade_job *job, const struct grade_variant
 	}
 }
 
-/* Leaves out of the fit the pixels on a cell's edge: those whose cell
- * colour (the ambient basis) is not their four neighbours' too.  A
+/* Leaves out of the fit the pixels where the bases are all alike, and
+ * those on a cell's edge: whose cell colour (the ambient basis) is not
+ * their four neighbours' too.  A
  * camera a fraction of a pixel off, or rays through the pixels' corners,
  * changes their colour wholly; on a small image that is most of the
  * floor, and a fit on them finds a finish that is none. */
@@ -112,14 +104,23 @@ static void finish_inside_cells(const struct grade_job *job, const struct grade_
 {
 	static const int dx[4] = { 1, -1, 0, 0 }, dy[4] = { 0, 0, 1, -1 };
 	struct shade_floor fl = with->floor;
-	const float *a = finish_basis(fs, FINISH_A);
+	const float *a = finish_basis(fs, FINISH_A), *d = finish_basis(fs, FINISH_D);
+	const float *refl = finish_basis(fs, FINISH_R);
 	size_t i;
 	int k;
 
 	fl.own_finish = true;
 	memset(&fl.finish, 0, sizeof(fl.finish));
 	fl.finish.ka = 1.0;
-	for (i = 0; i < fs->n; i++)
+	for (i = 0; i < fs->n; i++) {
+		/* The bases all alike: the variant's ray meets no floor there
+		 * (a floor cause's other floor), or a black cell that sees
+		 * black, which says nothing of the finish either. */
+		if (memcmp(a + 3 * i, d + 3 * i, 3 * sizeof(float)) == 0 &&
+		    memcmp(a + 3 * i, refl + 3 * i, 3 * sizeof(float)) == 0) {
+			memset(fs->use + 3 * i, 0, 3);
+			continue;
+		}
 		for (k = 0; k < 4; k++) {
 			struct ray r = camera_ray(job->camera, px[2 * i] + dx[k], px[2 * i + 1] + dy[k]);
 			struct color c = shade_rules_trace_floor(job->scene, &with->settings, with->rules,
@@ -131,174 +132,8 @@ static void finish_inside_cells(const struct grade_job *job, const struct grade_
 				break;
 			}
 		}
-}
-
-static double finish_clamp(double v)
-{
-	return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
-}
-
-/* The model's colour of row j (pixel j / 3, channel j % 3) for k with
- * specular basis sb. */
-static double finish_model(const struct finish_sample *fs, int sb, const double k[FINISH_K],
-			   size_t j)
-{
-	return finish_clamp(k[FINISH_KA] * finish_basis(fs, FINISH_A)[j] +
-			    k[FINISH_KD] * finish_basis(fs, FINISH_D)[j] +
-			    k[FINISH_KS] * finish_basis(fs, sb)[j] +
-			    k[FINISH_KR] * finish_basis(fs, FINISH_R)[j]);
-}
-
-/* The squared error of k over every row in use (the model clamped). */
-static double finish_error(const struct finish_sample *fs, int sb, const double k[FINISH_K])
-{
-	double e = 0.0, r;
-	size_t j;
-
-	for (j = 0; j < 3 * fs->n; j++)
-		if (fs->use[j]) {
-			r = finish_model(fs, sb, k, j) - fs->target[j];
-			e += r * r;
-		}
-	return e;
-}
-
-/* Solves the m x m system a x = y (row stride FINISH_K) by elimination
- * with partial pivoting; false when it is singular. */
-static bool finish_solve(double a[FINISH_K][FINISH_K], double y[FINISH_K], int m, double x[FINISH_K])
-{
-	int i, j, c, p;
-
-	for (c = 0; c < m; c++) {
-		p = c;
-		for (i = c + 1; i < m; i++)
-			if (fabs(a[i][c]) > fabs(a[p][c]))
-				p = i;
-		if (!(fabs(a[p][c]) > 1e-12))
-			return false;
-		for (j = 0; j < m; j++) {
-			double t = a[c][j];
-			a[c][j] = a[p][j];
-			a[p][j] = t;
-		}
-		{
-			double t = y[c];
-			y[c] = y[p];
-			y[p] = t;
-		}
-		for (i = c + 1; i < m; i++) {
-			double f = a[i][c] / a[c][c];
-			for (j = c; j < m; j++)
-				a[i][j] -= f * a[c][j];
-			y[i] -= f * y[c];
-		}
-	}
-	for (i = m - 1; i >= 0; i--) {
-		double v = y[i];
-		for (j = i + 1; j < m; j++)
-			v -= a[i][j] * x[j];
-		x[i] = v / a[i][i];
-	}
-	return true;
-}
-
-/* The least-squares coefficients (>= 0) over the rows in use whose
- * target is not saturated (there the model is unclamped and linear):
- * the normal equations, a coefficient that comes out negative held at 0
- * and the rest solved again. */
-static void finish_least_squares(const struct finish_sample *fs, int sb, double k[FINISH_K])
-{
-	const float *col[FINISH_K];
-	bool held[FINISH_K] = { false, false, false, false };
-	int round, i, j, m, idx[FINISH_K];
-	size_t r;
-
-	col[FINISH_KA] = finish_basis(fs, FINISH_A);
-	col[FINISH_KD] = finish_basis(fs, FINISH_D);
-	col[FINISH_KS] = finish_basis(fs, sb);
-	col[FINISH_KR] = finish_basis(fs, FINISH_R);
-	for (round = 0; round < FINISH_K; round++) {
-		double a[FINISH_K][FINISH_K], y[FINISH_K], x[FINISH_K];
-		int worst = -1;
-
-		for (m = 0, i = 0; i < FINISH_K; i++)
-			if (!held[i])
-				idx[m++] = i;
-		memset(a, 0, sizeof(a));
-		memset(y, 0, sizeof(y));
-		for (r = 0; r < 3 * fs->n; r++) {
-			if (!fs->use[r] || fs->target[r] >= 1.0f)
-				continue;
-			for (i = 0; i < m; i++) {
-				y[i] += (double)col[idx[i]][r] * fs->target[r];
-				for (j = 0; j < m; j++)
-					a[i][j] += (double)col[idx[i]][r] * col[idx[j]][r];
-			}
-		}
-		for (i = 0; i < FINISH_K; i++)
-			k[i] = 0.0;
-		if (m == 0 || !finish_solve(a, y, m, x))
-			return;
-		for (i = 0; i < m; i++) {
-			k[idx[i]] = x[i];
-			if (x[i] < 0.0 && (worst < 0 || x[i] < k[worst]))
-				worst = idx[i];
-		}
-		if (worst < 0)
-			return;
-		held[worst] = true;
 	}
 }
-
-/* Leaves out of the fit the rows whose error under k is far beyond the
- * rest (a pixel on a cell's edge another colour, an object's edge): more
- * than 4 times the median error, and 8 levels. */
-static void finish_trim(struct finish_sample *fs, int sb, const double k[FINISH_K], float *tmp)
-{
-	size_t j, m = 0, lo, hi;
-	double median, cut;
-
-	for (j = 0; j < 3 * fs->n; j++)
-		if (fs->use[j])
-			tmp[m++] = (float)fabs(finish_model(fs, sb, k, j) - fs->target[j]);
-	if (m == 0)
-		return;
-	/* The median by a partial quickselect over tmp[0..m). */
-	lo = 0;
-	hi = m - 1;
-	while (lo < hi) {
-		float pivot = tmp[(lo + hi) / 2], t;
-		size_t a = lo, b = hi;
-
-		while (a <= b) {
-			while (tmp[a] < pivot)
-				a++;
-			while (tmp[b] > pivot)
-				b--;
-			if (a <= b) {
-				t = tmp[a];
-				tmp[a] = tmp[b];
-				tmp[b] = t;
-				a++;
-				if (b == 0)
-					break;
-				b--;
-			}
-		}
-		if (m / 2 <= b)
-			hi = b;
-		else if (m / 2 >= a)
-			lo = a;
-		else
-			break;
-	}
-	median = tmp[m / 2];
-	cut = fmax(4.0 * median, 8.0 / 255.0);
-	for (j = 0; j < 3 * fs->n; j++)
-		if (fs->use[j] && fabs(finish_model(fs, sb, k, j) - fs->target[j]) > cut)
-			fs->use[j] = 0;
-}
-
 
 /* The basis of the exponent nearest n (the scene's own finish). */
 static int finish_basis_of(double n)
@@ -397,14 +232,17 @@ static bool finish_same(const struct material *a, const struct material *b)
 static void finish_fit(struct finish_sample *fs, float *tmp, const struct material *own,
 		       struct grade_job *job)
 {
-	double k[FINISH_K], best_k[FINISH_K], e, best_e = INFINITY;
 	const double own_k[FINISH_K] = { own->ka, own->kd, own->ks, own->kr };
-	int sb, best_sb = FINISH_S0, pass, form;
+	double k[FINISH_K], best_k[FINISH_K], e, best_e = INFINITY;
+	int sb, best_sb = finish_basis_of(own->shininess), pass, form;
 	size_t j, used = 0;
+
+	memcpy(best_k, own_k, sizeof(best_k));
+	job->n_floor_finishes = 0;
 
 	for (pass = 0; pass < 2; pass++) {
 		best_e = INFINITY;
-		for (sb = FINISH_S0; sb < FINISH_BASES; sb++) {
+		for (sb = FINISH_S0; sb < FINISH_R; sb++) {
 			finish_least_squares(fs, sb, k);
 			if ((e = finish_error(fs, sb, k)) < best_e) {
 				best_e = e;
@@ -429,7 +267,8 @@ static void finish_fit(struct finish_sample *fs, float *tmp, const struct materi
 		m->ks = finish_value(best_k[FINISH_KS], form == 0);
 		m->kr = finish_value(best_k[FINISH_KR], form == 0);
 		m->shininess = m->ks > 0.0 ? finish_shininess[best_sb - FINISH_S0] : own->shininess;
-		if (!finish_same(m, own) && (form == 0 || !finish_same(m, &job->floor_finishes[0])))
+		if (!finish_same(m, own) &&
+		    (job->n_floor_finishes == 0 || !finish_same(m, &job->floor_finishes[0])))
 			job->n_floor_finishes++;
 	}
 }
@@ -470,8 +309,10 @@ int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const
 {
 	struct grade_variant with;
 	struct finish_sample fs;
+	const struct material *own;
 	int32_t *px = NULL;
 	float *tmp = NULL;
+	uint8_t *kept = NULL;
 	size_t i, used = 0;
 	int rc;
 
@@ -481,19 +322,33 @@ int grade_fit_floor_finish(struct grade_job *job, const struct image *sub, const
 		return 0;
 	if ((rc = finish_sample_of(job, sub, skip, truncated, &fs, &px, d)) <= 0)
 		goto out;
-	if (!(tmp = rt_reallocarray(NULL, 3 * fs.n, sizeof(float)))) {
+	if (!(tmp = rt_reallocarray(NULL, 3 * fs.n, sizeof(float))) || !(kept = rt_malloc(3 * fs.n))) {
 		rc = diag_fail(d, RT_E_NOMEM, "out of memory for the floor's finish");
 		goto out;
 	}
-	finish_trace(job, &with, px, &fs);
+	own = &job->scene->floor->mat;
+	finish_trace(job, &with, own, FINISH_A, px, &fs);
 	finish_inside_cells(job, &with, px, &fs);
+	memcpy(kept, fs.use, 3 * fs.n);
 	for (i = 0; i < 3 * fs.n; i++)
 		used += fs.use[i];
-	if (used >= 3 * FINISH_MIN_PIXELS)
-		finish_fit(&fs, tmp, &job->scene->floor->mat, job);
+	if (used < 3 * FINISH_MIN_PIXELS)
+		goto out;
+	/* The floor seen in reflections has the student's finish too: with
+	 * the scene's in the first fit, with the first fit's in the second
+	 * (kr 0.259 for 0.25 in the first, where spheres mirror the floor). */
+	finish_fit(&fs, tmp, own, job);
+	if (job->n_floor_finishes > 0) {
+		struct material first = job->floor_finishes[job->n_floor_finishes - 1];
+
+		finish_trace(job, &with, &first, FINISH_R, px, &fs);
+		memcpy(fs.use, kept, 3 * fs.n);
+		finish_fit(&fs, tmp, own, job);
+	}
 out:
 	rt_free(px);
 	rt_free(tmp);
+	rt_free(kept);
 	rt_free(fs.basis);
 	rt_free(fs.target);
 	rt_free(fs.use);

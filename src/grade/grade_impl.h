@@ -48,8 +48,8 @@ enum grade_floor_change {
 /* The most forms a cause has. */
 #define GRADE_VARIANTS 8
 /* A bound on the renders of one ranking: far above what the causes'
- * table makes (51 forms of singles, about 30 pairs with the floors'
- * sweeps, 6 in full: about 104 in all). */
+ * table makes (about 53 forms of singles, the pairs with the floors' and
+ * the finish's sweeps, 6 in full: about 155 at most). */
 #define GRADE_MAX_RENDERS (RT_CAUSE_COUNT * (GRADE_VARIANTS + 1) + GRADE_MAX_PAIRS)
 
 /* The render of form `form` of cause c into v; false when the cause has

@@ -314,6 +314,7 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 	size_t idx[2 * GRADE_MAX_PAIRS], first = g->n_todo, np, k, j, m = 0;
 	size_t from = *n < GRADE_PAIR_FROM ? *n : GRADE_PAIR_FROM;
 	int swept = 0, finish_swept = 0, rc;
+	unsigned sides;
 
 	/* The transforms' compositions, exactly. */
 	for (k = 0; k < sizeof(grade_transform_pairs) / sizeof(grade_transform_pairs[0]); k++) {
@@ -353,17 +354,17 @@ static int grade_rank_pairs(struct grade_ranking *g, struct grade_rank *out, siz
 				continue;	/* two transforms: done exactly above */
 			if ((rc = grade_pair_add(g, x->cause, x->form, y->cause, y->form, &v, d)) < 0)
 				return rc;
-			if (va.floor_changes && vb.floor_changes ? swept++ < GRADE_FLOOR_SWEPT
-			    : (va.floor_changes | vb.floor_changes) & GRADE_FLOOR_FINISH) {
-				/* With the floor's finish: its other form (rounded
-				 * or as fitted) with every cause, and the other
-				 * cause's forms for the likeliest few. */
-				unsigned sides = va.floor_changes && vb.floor_changes ? 3u
-					: finish_swept++ < GRADE_FINISH_SWEPT ? 3u
+			/* With the floor's finish: its other form (rounded or
+			 * as fitted) with every cause, and the other cause's
+			 * forms for the likeliest few; two floors apart. */
+			sides = 0;
+			if ((va.floor_changes | vb.floor_changes) & GRADE_FLOOR_FINISH)
+				sides = finish_swept++ < GRADE_FINISH_SWEPT ? 3u
 					: vb.floor_changes & GRADE_FLOOR_FINISH ? 1u : 2u;
-				if ((rc = grade_floor_pair_forms(g, x, y, sides, d)) < 0)
-					return rc;
-			}
+			else if (va.floor_changes && vb.floor_changes && swept++ < GRADE_FLOOR_SWEPT)
+				sides = 3u;
+			if (sides && (rc = grade_floor_pair_forms(g, x, y, sides, d)) < 0)
+				return rc;
 		}
 	if ((rc = grade_todo_run(g, first, false, d)) < 0)
 		return rc;

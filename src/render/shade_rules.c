@@ -203,7 +203,9 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 	hit = rules_intersect(s, fl, r, eps, &t);
 	if (!hit)
 		return color_make(0.0, 0.0, 0.0);
-	m = fl && fl->own_finish && hit == s->floor ? &fl->finish : &hit->mat;
+	m = &hit->mat;
+	if (fl && fl->own_finish && hit == s->floor)
+		m = level > 1 && fl->own_deeper ? &fl->deeper : &fl->finish;
 	p = ray_at(r, t);
 	base = shape_color_at(hit, p);
 	if (shape_specular_color_at(hit, p, &spec_color))

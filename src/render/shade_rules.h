@@ -48,12 +48,13 @@ struct color shade_rules_trace(const struct scene *s, const struct render_settin
  * floor((y - oy) / cell)), white when i + j is even, black otherwise;
  * else the scene floor's shape and cells.  When own_finish: finish in
  * place of the scene floor's coefficients and shininess (its colour
- * stays the cells'). */
+ * stays the cells'), and where own_deeper, deeper in place of it on the
+ * floor seen in reflections (a fit's basis is the floor's first hit). */
 struct shade_floor {
 	bool moved;
 	double half, cell, ox, oy, cx, cy;
-	bool own_finish;
-	struct material finish;
+	bool own_finish, own_deeper;
+	struct material finish, deeper;
 };
 
 /* shade_rules_trace with the floor fl (NULL: the scene's own). */

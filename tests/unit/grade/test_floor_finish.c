@@ -92,6 +92,14 @@ static void test_floor_finish_found(void **state)
 		assert_near(got->kr, f.kr, 1e-12);
 		/* Without a highlight the exponent is the scene's. */
 		assert_near(got->shininess, f.ks > 0.0 ? f.shininess : t.s->floor->mat.shininess, 0.0);
+		/* The values as fitted (the floor in the spheres' reflections
+		 * with the finish found first): within 0.005. */
+		if (t.job.n_floor_finishes == 2) {
+			assert_near(t.job.floor_finishes[1].ka, f.ka, 0.005);
+			assert_near(t.job.floor_finishes[1].kd, f.kd, 0.005);
+			assert_near(t.job.floor_finishes[1].ks, f.ks, 0.005);
+			assert_near(t.job.floor_finishes[1].kr, f.kr, 0.005);
+		}
 		image_free(&sub);
 	}
 	scene_destroy(t.s);
