@@ -212,6 +212,10 @@ struct grade_fit {
 					 * reference for the camera found, or
 					 * RT_CAUSE_NONE (the plain reference) */
 	int form;			/* its form */
+	enum grade_cause also;		/* a second one rendered with it (the floor's
+					 * shape: its width, then its cells), or
+					 * RT_CAUSE_NONE */
+	int also_form;
 	double levels[GRADE_FIT_LEVELS];	/* the best score on each level
 					 * in the search from the starts
 					 * (INFINITY where it did not go); of
@@ -225,9 +229,11 @@ struct grade_fit {
  * and aspect are kept).  When no camera comes near the plain reference,
  * the search is made again with each mistake that changes most of an
  * image rendered in its place (gamma; the floor's tiles swapped: they
- * pull a fit of the plain reference away), and the nearest kept; the
- * score is then that render's, and cause and form say which.
- * Deterministic: the same answer for any number of threads. */
+ * pull a fit of the plain reference away), and the nearest kept; then,
+ * if none came near either, with the floor of other widths and cells (a
+ * floor of another shape and a moved camera at once).  The score is then
+ * that render's, and cause and form (and also, also_form for the floor's
+ * cells) say which.  Deterministic: the same answer for any number of threads. */
 int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
 		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d);
 

@@ -99,10 +99,10 @@ bool check_floor_textured(const struct image *ref, const struct image *sub, cons
 	return n >= CHECK_TEXTURE_MIN_PIXELS && (double)dense / (double)n > CHECK_TEXTURE_DENSE;
 }
 
-/* The figures of sub against the reference at view v with form `form`
- * of cause c in its place (RT_CAUSE_NONE: the reference itself), on the
+/* The figures of sub against the reference at view v with the fit's
+ * cause (and its second) in its place (RT_CAUSE_NONE: the reference itself), on the
  * pixels skip does not mark. */
-static int check_figures_with(const struct check_view *v, enum grade_cause c, int form,
+static int check_figures_with(const struct check_view *v, const struct grade_fit *fit,
 			      const struct image *sub, const uint8_t *skip,
 			      struct grade_figures *fig, struct diag *d)
 {
@@ -110,14 +110,15 @@ static int check_figures_with(const struct check_view *v, enum grade_cause c, in
 	struct image img;
 	int rc;
 
-	if (c == RT_CAUSE_NONE) {
+	if (fit->cause == RT_CAUSE_NONE) {
 		grade_figures_skipping(&v->image, sub, skip, fig);
 		return 0;
 	}
 	memset(&r, 0, sizeof(r));
-	r.cause = c;
-	r.form = form;
-	r.also = RT_CAUSE_NONE;
+	r.cause = fit->cause;
+	r.form = fit->form;
+	r.also = fit->also;
+	r.also_form = fit->also_form;
 	if ((rc = grade_cause_image(&v->job, &v->image, &r, &img, d)) < 0)
 		return rc;
 	grade_figures_skipping(&img, sub, skip, fig);
@@ -126,7 +127,7 @@ static int check_figures_with(const struct check_view *v, enum grade_cause c, in
 }
 
 int check_compare_cameras(const struct check_view *a, const struct check_view *b,
-			  const struct image *sub, enum grade_cause c, int form,
+			  const struct image *sub, const struct grade_fit *fit,
 			  struct grade_figures *fa, struct grade_figures *fb, struct diag *d)
 {
 	size_t total = (size_t)sub->width * (size_t)sub->height, i;
@@ -137,9 +138,9 @@ int check_compare_cameras(const struct check_view *a, const struct check_view *b
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the ties");
 	for (i = 0; i < total; i++)
 		skip[i] = (a->ties && a->ties[i]) || (b->ties && b->ties[i]);
-	rc = check_figures_with(a, c, form, sub, skip, fa, d);
+	rc = check_figures_with(a, fit, sub, skip, fa, d);
 	if (rc == 0)
-		rc = check_figures_with(b, c, form, sub, skip, fb, d);
+		rc = check_figures_with(b, fit, sub, skip, fb, d);
 	rt_free(skip);
 	return rc;
 }

@@ -129,7 +129,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		return rc;
 	if ((rc = check_figures(&res->found, &res->image, &res->fig_found, &rounded, &truncated, d)) < 0)
 		return rc;
-	if ((rc = check_compare_cameras(v, &res->found, &res->image, fit.cause, fit.form, &given,
+	if ((rc = check_compare_cameras(v, &res->found, &res->image, &fit, &given,
 					 &found, d)) < 0)
 		return rc;
 	/* Nearer in colour, or in grey (the fit's own figures: an image
@@ -177,7 +177,11 @@ static int check_judged(const struct check_view *v, struct check_result *res,
 		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
 	if ((rc = grade_object_ids(&v->job, ids, d)) < 0)
 		goto out;
-	res->floor_textured = check_floor_textured(&v->image, &res->image, ids);
+	/* A floor the fit found another shape of is a checker, however fine
+	 * its cells look at the image's size. */
+	res->floor_textured = !(res->fitted && (res->fit.cause == RT_CAUSE_FLOOR_SIZE ||
+						res->fit.cause == RT_CAUSE_FLOOR_HORIZON)) &&
+			      check_floor_textured(&v->image, &res->image, ids);
 	if (!res->floor_textured)
 		goto out;
 	if ((rc = image_alloc(judged, res->image.width, res->image.height, d)) < 0)

@@ -157,6 +157,7 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 	memset(out, 0, sizeof(*out));
 	out->camera = starts[0];
 	out->cause = RT_CAUSE_NONE;
+	out->also = RT_CAUSE_NONE;
 	for (k = 0; k < FIT_HYPOTHESES; k++)
 		pivot[k] = 100.0;
 	for (k = 0; k < n_stages; k++)
@@ -270,6 +271,23 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 	return 0;
 }
 
+int fit_screen(const struct grade_job *job, const struct camera_params *starts, int n_starts,
+	       const struct image *sub, const struct grade_variant *variant, double *score,
+	       struct diag *d)
+{
+	double stop[GRADE_FIT_LEVELS];
+	struct grade_fit out;
+	int k, rc;
+
+	/* A bound no level meets ends the pass on the guard's first level,
+	 * its score recorded. */
+	for (k = 0; k < GRADE_FIT_LEVELS; k++)
+		stop[k] = k < FIT_GUARD_FIRST_STAGE ? INFINITY : -INFINITY;
+	rc = fit_run(job, starts, n_starts, sub, variant, 0, stop, &out, d);
+	*score = out.levels[FIT_GUARD_FIRST_STAGE];
+	return rc;
+}
+
 /* The dolly line: a camera moved along its view and zoomed to keep the
  * scene's middle the same size sees much the same (only the near objects'
  * parallax and the near floor differ), and the passes can settle tens of
@@ -341,9 +359,9 @@ static int fit_dolly_scan(const struct grade_job *job, const struct camera_param
 /* The camera in out refined on the polish level (fit_polish_stage), unless
  * it is already within FIT_POLISHED_SCORE; out's scores stay the last
  * stage's. */
-static int fit_polish(const struct grade_job *job, const struct camera_params *start,
-		      const struct image *sub, const struct grade_variant *variant, struct grade_fit *out,
-		      struct diag *d)
+int fit_polish(const struct grade_job *job, const struct camera_params *start,
+	       const struct image *sub, const struct grade_variant *variant, struct grade_fit *out,
+	       struct diag *d)
 {
 	struct fit_level level;
 	struct fit_batch batch;
@@ -374,7 +392,7 @@ static int fit_polish(const struct grade_job *job, const struct camera_params *s
 /* Keeps the later fit `again` in out when it ran and scores lower on the
  * same last level (true then); either way out counts both fits'
  * candidates. */
-static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
+bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
 {
 	if (again->evals > 0 && again->score < out->score) {
 		again->evals += out->evals;
@@ -396,34 +414,12 @@ static bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
  * no alias looks that much like the image, so no second pass. */
 #define FIT_SETTLED_SCORE 1.0
 
-/* A fit this far from the image (a mean squared grey difference on the
- * last level: 50 is about 7 levels everywhere) was pulled away by a
- * mistake that changes most of the image: the passes are made once more
- * with each of these rendered in place of the reference (the camera and
- * the mistake fitted at once), and the nearest of all kept.  Gamma and no
- * shadows (where a big object shadows the floor) make most pixels
- * brighter, and the plain reference's nearest camera sees more of the
- * bright parts; swapped tiles make the floor's every cell the wrong
- * colour, and the plain fit ends a dolly and an alias away.  The later
- * refit with a cause (grade_fit_camera_with) starts from the camera
- * found, too near to leave such a camera; docs/validation.md (the camera
- * fit, step 7) has the cases. */
-#define FIT_PULLED_SCORE 50.0
-static const struct {
-	enum grade_cause cause;
-	int form;
-} fit_pulling_causes[] = {
-	{ RT_CAUSE_GAMMA, 0 },
-	{ RT_CAUSE_FLOOR_SWAPPED, 0 },
-	{ RT_CAUSE_NO_SHADOWS, 0 },
-};
-
 /* The passes from the starts with the variant's colours (NULL: the
  * reference's): the first, and unless it settled, a second from where it
  * ended and the dolly line. */
-static int fit_passes(const struct grade_job *job, const struct camera_params *starts,
-		      int n_starts, const struct image *sub, const struct grade_variant *variant,
-		      const double *bound, struct grade_fit *out, struct diag *d)
+int fit_passes(const struct grade_job *job, const struct camera_params *starts, int n_starts,
+	       const struct image *sub, const struct grade_variant *variant, const double *bound,
+	       struct grade_fit *out, struct diag *d)
 {
 	struct grade_fit again;
 	int rc = fit_run(job, starts, n_starts, sub, variant, 0, bound, out, d);
@@ -452,31 +448,6 @@ static int fit_passes(const struct grade_job *job, const struct camera_params *s
 		}
 	}
 	return 0;
-}
-
-int grade_fit_camera(const struct grade_job *job, const struct camera_params *starts,
-		     int n_starts, const struct image *sub, struct grade_fit *out, struct diag *d)
-{
-	struct grade_variant pulls[sizeof(fit_pulling_causes) / sizeof(fit_pulling_causes[0])];
-	const struct grade_variant *kept = NULL;
-	size_t k;
-	int rc = fit_passes(job, starts, n_starts, sub, NULL, NULL, out, d);
-
-	if (rc < 0)
-		return rc;
-	for (k = 0; k < sizeof(pulls) / sizeof(pulls[0]) && out->score > FIT_PULLED_SCORE; k++) {
-		struct grade_fit again;
-		if (!grade_variant_of(job, fit_pulling_causes[k].cause, fit_pulling_causes[k].form, &pulls[k]))
-			continue;
-		if ((rc = fit_passes(job, starts, n_starts, sub, &pulls[k], out->levels, &again,
-				     d)) < 0)
-			return rc;
-		again.cause = fit_pulling_causes[k].cause;
-		again.form = fit_pulling_causes[k].form;
-		if (fit_keep_better(out, &again))
-			kept = &pulls[k];
-	}
-	return fit_polish(job, &starts[0], sub, kept, out, d);
 }
 
 int grade_fit_camera_with(const struct grade_job *job, const struct camera_params *start,

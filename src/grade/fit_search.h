@@ -56,4 +56,36 @@ bool fit_final_alias(struct fit_batch *b, double *x, double *fx, long *evals);
  * starts, since the plain fit of such an image ends on that alias. */
 void fit_odd_alias(struct fit_batch *b, double *x, long *evals);
 
+/* The passes from the starts with the variant's colours (NULL: the
+ * reference's): the first and, unless it settled, a second from where it
+ * ended and the dolly line; abandoned (score INFINITY) on the first level
+ * farther than bound's (NULL: never). */
+int fit_passes(const struct grade_job *job, const struct camera_params *starts, int n_starts,
+	       const struct image *sub, const struct grade_variant *variant, const double *bound,
+	       struct grade_fit *out, struct diag *d);
+/* The first pass with the variant up to the guard's first level (the
+ * coarse search, stage 0 and the aliases of stage 1): its best score
+ * there into *score, a cheap look at a variant before a whole pass. */
+int fit_screen(const struct grade_job *job, const struct camera_params *starts, int n_starts,
+	       const struct image *sub, const struct grade_variant *variant, double *score,
+	       struct diag *d);
+/* The camera in out refined on the image's own pixels (the polish),
+ * unless its last level is already within a small fraction of a cell;
+ * out's scores stay the last stage's. */
+int fit_polish(const struct grade_job *job, const struct camera_params *start,
+	       const struct image *sub, const struct grade_variant *variant, struct grade_fit *out,
+	       struct diag *d);
+/* Keeps the later fit `again` in out when it ran and scores lower on the
+ * last level (out's levels, the plain pass's, stay); true when it did. */
+bool fit_keep_better(struct grade_fit *out, struct grade_fit *again);
+
+/* The floor's shape fitted with the camera, when no camera comes near
+ * with the scene's floor (out's score): widths, then cells at the best
+ * width.  A shape that comes nearer goes into out (its causes in cause
+ * and also) and its variant into *shape; returns 1 then, 0 when none did,
+ * < 0 on failure. */
+int fit_floor_shape(const struct grade_job *job, const struct camera_params *starts,
+		    int n_starts, const struct image *sub, struct grade_fit *out,
+		    struct grade_variant *shape, struct diag *d);
+
 #endif

@@ -252,6 +252,19 @@ run compare -q --json -s 96 --no-camera-fit "${SR20[@]}" "$DATA/student-renders/
 json finish-with-cone 'assert j["first"] == ["spot-cone+floor-finish"] and j["best"]["explains"], j["causes"][:2]
 assert "PI a macro" in j["causes"][0]["with"] and "0.25 0.25 0.25 0.25, shininess 15" in j["causes"][0]["with"], j["causes"][0]'
 
+# --- Another floor and a moved camera at once (Avi-Dewan's sr04: a floor
+# 400 wide with cells 10, then the camera moved): no camera of the scene's
+# floor comes near, so the floor's widths are screened and the cells
+# fitted with the camera.  Before, the fine checker passed for a textured
+# floor and the image was called a match.
+python3 "$REF" "$SCENE" "$I/floor-shape.ppm" --size 96 --floor 400,10 --eye 60,-230,95 --look 0,-40,5 \
+	--up 0,0,1 --fov 75
+run compare -q --json "$SCENE" "$I/floor-shape.ppm"
+json floor-shape-moved 'assert j["verdict"] == "differs" and j["camera"]["moved"], (j["verdict"], j["camera"])
+assert "floor-cell" in j["best"]["causes"] and "cells 10 wide" in j["causes"][0]["with"], j["causes"][:2]
+eye = [float(x) for x in j["camera"]["options"].split()[1].split(",")]
+assert max(abs(a - b) for a, b in zip(eye, (60, -230, 95))) < 3, eye'
+
 # --- Object by object: one sphere's colour changed in the file.
 # (Sphere 1, green, made magenta: its reflections change a little of the
 # others too.)
