@@ -33,6 +33,10 @@ static const struct {
  * floor's: sr04 (a floor 400 wide) 0.70; the renders whose floor is the
  * scene's, 0.94 to 1. */
 #define FIT_FLOOR_WIDTH_GAIN 0.85
+/* Below this many pixels on the image's shorter side the cells are a
+ * pixel or less wherever the floor's shape could show (and each screen and
+ * pass costs nearly what it costs at 768): not looked at. */
+#define FIT_FLOOR_MIN_PIXELS 64
 /* RT_CAUSE_FLOOR_CELL's forms, each a cell size (the scene's own has none). */
 #define FIT_FLOOR_CELLS GRADE_VARIANTS
 
@@ -92,7 +96,8 @@ int fit_floor_shape(const struct grade_job *job, const struct camera_params *sta
 	int best_w = -1, best_c = -2, w, c, rc;
 	bool horizon_nearer = false;
 
-	if (!job->scene->floor || sv->floor_width == INFINITY)
+	if (!job->scene->floor || sv->floor_width == INFINITY || sub->width < FIT_FLOOR_MIN_PIXELS ||
+	    sub->height < FIT_FLOOR_MIN_PIXELS)
 		return 0;
 	for (w = 0; w < (int)FIT_FLOOR_WIDTHS; w++) {
 		struct grade_variant v;
