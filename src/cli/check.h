@@ -94,9 +94,10 @@ double check_displacement(const struct check_view *a, const struct check_view *b
  * reference's) against the references at two cameras, on the same
  * pixels: neither camera's ties (a found camera's take in every edge,
  * where a wrong camera differs most).  With a cause (the one the fit
- * found the camera with, and its second: the floor's width and cells), its render at each camera in the reference's
- * place: the floor's tiles swapped at the true camera are farther from
- * the plain reference than a wrong camera's plain view can be. */
+ * found the camera with, and its second: the floor's width and cells),
+ * its render at each camera in the reference's place: the floor's tiles
+ * swapped at the true camera are farther from the plain reference than a
+ * wrong camera's plain view can be. */
 int check_compare_cameras(const struct check_view *a, const struct check_view *b,
 			  const struct image *sub, const struct grade_fit *fit,
 			  struct grade_figures *fa, struct grade_figures *fb, struct diag *d);

@@ -100,8 +100,8 @@ bool check_floor_textured(const struct image *ref, const struct image *sub, cons
 }
 
 /* The figures of sub against the reference at view v with the fit's
- * cause (and its second) in its place (RT_CAUSE_NONE: the reference itself), on the
- * pixels skip does not mark. */
+ * cause (and its second) in its place (RT_CAUSE_NONE: the reference
+ * itself), on the pixels skip does not mark. */
 static int check_figures_with(const struct check_view *v, const struct grade_fit *fit,
 			      const struct image *sub, const uint8_t *skip,
 			      struct grade_figures *fig, struct diag *d)

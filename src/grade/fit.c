@@ -51,13 +51,6 @@ static const struct fit_stage fit_stages[GRADE_FIT_LEVELS] = {
  * level, against the given camera's score there). */
 static const struct fit_stage fit_polish_stage = { 384, 1, 0.5, 3 };
 
-/* A pass given the plain pass's levels (struct grade_fit) as its bound
- * stops on the first level from this one on where its best is farther:
- * the levels are the submission's, so the scores compare, and a mistake
- * that explains the image beats the plain reference there already.  On
- * images nothing explains, such passes were a third of compare's time. */
-#define FIT_GUARD_FIRST_STAGE 1
-
 /* The hypotheses the first stages carry: the stage-0 refinements of the
  * best starting cameras, each refined on the next levels until the one
  * that fits best there is clear. */

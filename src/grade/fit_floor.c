@@ -40,20 +40,20 @@ static const struct {
 /* RT_CAUSE_FLOOR_CELL's forms, each a cell size (the scene's own has none). */
 #define FIT_FLOOR_CELLS GRADE_VARIANTS
 
-/* The variant of a width (w < 0: the scene's) with cells c (c < 0: the
- * scene's); false when there is no such floor or it is the scene's. */
+/* The variant of width w with cells c (c < 0: the scene's); false when
+ * the scene has no such floor. */
 static bool fit_floor_variant(const struct grade_job *job, int w, int c, struct grade_variant *v)
 {
-	struct grade_variant a, b;
-	bool ha = w >= 0 && grade_variant_of(job, fit_floor_widths[w].cause, fit_floor_widths[w].form, &a);
-	bool hb = c >= 0 && grade_variant_of(job, RT_CAUSE_FLOOR_CELL, c, &b);
+	struct grade_variant width, cells;
 
-	if ((w >= 0 && !ha) || (c >= 0 && !hb) || (!ha && !hb))
+	if (!grade_variant_of(job, fit_floor_widths[w].cause, fit_floor_widths[w].form, &width))
 		return false;
-	if (ha && hb)
-		return grade_variant_combine(&a, &b, v);
-	*v = ha ? a : b;
-	return true;
+	if (c < 0) {
+		*v = width;
+		return true;
+	}
+	return grade_variant_of(job, RT_CAUSE_FLOOR_CELL, c, &cells) &&
+	       grade_variant_combine(&width, &cells, v);
 }
 
 /* A whole pass with width w (>= 0) and cells c (< 0: the scene's),
@@ -92,7 +92,8 @@ int fit_floor_shape(const struct grade_job *job, const struct camera_params *sta
 		    struct grade_variant *shape, struct diag *d)
 {
 	const struct scene_view *sv = scene_view_of(job->scene);
-	double best_screen = out->levels[1], bound[GRADE_FIT_LEVELS];
+	const double scene_screen = out->levels[FIT_GUARD_FIRST_STAGE];
+	double best_screen = scene_screen, bound[GRADE_FIT_LEVELS];
 	int best_w = -1, best_c = -2, w, c, rc;
 	bool horizon_nearer = false;
 
@@ -108,7 +109,7 @@ int fit_floor_shape(const struct grade_job *job, const struct camera_params *sta
 		if ((rc = fit_screen(job, starts, n_starts, sub, &v, &score, d)) < 0)
 			return rc;
 		if (fit_floor_widths[w].cause == RT_CAUSE_FLOOR_HORIZON)
-			horizon_nearer = score <= FIT_FLOOR_WIDTH_GAIN * out->levels[1];
+			horizon_nearer = score <= FIT_FLOOR_WIDTH_GAIN * scene_screen;
 		if (score < best_screen) {
 			best_screen = score;
 			best_w = w;
@@ -118,7 +119,7 @@ int fit_floor_shape(const struct grade_job *job, const struct camera_params *sta
 	 * every cell size at one width were within a fifth of each other),
 	 * and a whole pass for each is seconds: they are tried only where
 	 * the floor's end is clearly elsewhere. */
-	if (best_w < 0 || !(best_screen <= FIT_FLOOR_WIDTH_GAIN * out->levels[1]))
+	if (best_w < 0 || !(best_screen <= FIT_FLOOR_WIDTH_GAIN * scene_screen))
 		return 0;
 	memcpy(bound, out->levels, sizeof(bound));
 	for (c = -1; c < FIT_FLOOR_CELLS; c++) {

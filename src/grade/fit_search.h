@@ -11,6 +11,13 @@
 
 #define FIT_MAX_THREADS 64
 
+/* A pass given the plain pass's levels (struct grade_fit) as its bound
+ * stops on the first level from this one on where its best is farther:
+ * the levels are the submission's, so the scores compare, and a mistake
+ * that explains the image beats the plain reference there already.  On
+ * images nothing explains, such passes were a third of compare's time. */
+#define FIT_GUARD_FIRST_STAGE 1
+
 /* A level's candidates scored on the job's threads, each with its own
  * scratch; optionally each candidate's cells and points kept. */
 struct fit_batch {
@@ -65,7 +72,8 @@ int fit_passes(const struct grade_job *job, const struct camera_params *starts, 
 	       struct grade_fit *out, struct diag *d);
 /* The first pass with the variant up to the guard's first level (the
  * coarse search, stage 0 and the aliases of stage 1): its best score
- * there into *score, a cheap look at a variant before a whole pass. */
+ * there (level FIT_GUARD_FIRST_STAGE) into *score, a cheap look at a
+ * variant before a whole pass. */
 int fit_screen(const struct grade_job *job, const struct camera_params *starts, int n_starts,
 	       const struct image *sub, const struct grade_variant *variant, double *score,
 	       struct diag *d);
