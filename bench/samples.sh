@@ -56,6 +56,13 @@ if command -v valgrind >/dev/null 2>&1; then
 			sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 	}
 	base=$(ir 8 1)
+	if [ -z "$base" ]; then
+		# valgrind ran but counted nothing (a binary whose debug info it
+		# cannot read, such as clang's DWARF 5 under valgrind 3.19).
+		echo
+		echo "(callgrind counted nothing: no instruction counts)"
+		exit 0
+	fi
 	one=$(($(ir 128 1) - base))
 	echo
 	echo "| N | instructions at 128x128 | N*N x one sample | ratio | one sample at N*128 | ratio |"
