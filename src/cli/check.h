@@ -117,6 +117,11 @@ enum check_explained {
 	CHECK_CLOSE,		/* much closer than the reference, not within the gate */
 	CHECK_NONE,		/* nothing comes close */
 };
+/* With nothing close, an image this near the reference (at the camera
+ * found) is said to nearly match: a person sees the same picture (about 4
+ * levels root mean square), and what remains is as likely a camera found
+ * a little off as a mistake. */
+#define CHECK_NEAR_PSNR 35.0
 
 struct check_result {
 	enum check_verdict verdict;

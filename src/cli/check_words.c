@@ -137,6 +137,13 @@ void check_diagnosis(const struct check_reference *ref, const struct check_resul
 			 "though %.2f%% of the pixels still differ: %s; then look for another mistake",
 			 cam, res->moved ? "it differs: " : "", first, equal[0] ? ", or equally " : "",
 			 equal, res->ranks[0].fig.psnr, plain->psnr, 100.0 * res->ranks[0].fig.off2, fix);
+	else if (plain->psnr >= CHECK_NEAR_PSNR)
+		snprintf(buf, size, "%s%s (%.1f dB; %.2f%% of the pixels differ): no known mistake comes "
+			 "nearer (the nearest, %s, reaches %.1f dB), so what remains is small: %sa "
+			 "difference no known mistake makes (see where with --diff)", cam,
+			 res->moved ? "it nearly matches" : "nearly matches", plain->psnr,
+			 100.0 * plain->off2, first, res->ranks[0].fig.psnr,
+			 res->moved ? "the camera found a little off, or " : "");
 	else
 		snprintf(buf, size, "%s%snone of the known mistakes comes close (the nearest, %s, "
 			 "reaches %.1f dB against the reference's %.1f dB)", cam,

@@ -133,6 +133,25 @@ run compare -q -s 30 "$SCENE" "$I/other.png"
 check other-exit [ "$rc" -eq 3 ]
 check other-none grep -q '^none of the known mistakes comes close' "$T/out"
 
+# The right image with a faint difference no mistake makes (every fifth
+# pixel's red 5 levels up: about 46 dB, a fifth of the pixels off by more
+# than 2): it differs, and nearly matches, which is what a person sees.
+"$W" -q -s 30 -o "$I/faint.ppm" "$SCENE"
+python3 - "$I/faint.ppm" <<'PY'
+import sys
+data = open(sys.argv[1], 'rb').read()
+head = data.split(b'\n', 3)
+assert head[0] == b'P6' and head[2] == b'255', head[:3]
+w, h = head[1].split()
+px = bytearray(head[3])
+for k in range(0, len(px) // 3, 5):
+    px[3 * k] = min(255, px[3 * k] + 5) if px[3 * k] < 250 else px[3 * k] - 5
+open(sys.argv[1], 'wb').write(b'P6\n%s %s\n255\n' % (w, h) + bytes(px))
+PY
+run compare -q -s 30 --no-camera-fit "$SCENE" "$I/faint.ppm"
+check faint-exit [ "$rc" -eq 3 ]
+check faint-nearly grep -q '^nearly matches ([4-5][0-9]\.[0-9] dB; 20\.00% of the pixels differ): no known mistake comes nearer' "$T/out"
+
 # Every dialect, and the render options passed through to the reference.
 for f in scene.txt spot.txt pyramid.txt nearfar.txt; do
 	"$W" -q -s 24 -o "$I/$f.png" "$ROOT/scenes/$f"
