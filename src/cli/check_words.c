@@ -82,6 +82,25 @@ static void check_camera_words(const struct check_result *res, char *buf, size_t
 	snprintf(buf, size, "your camera differs: found %s; at that camera ", opts);
 }
 
+/* The diagnosis when no cause comes close: the image nearly matches
+ * (CHECK_NEAR_PSNR), or it differs by what no known mistake makes. */
+static void check_unexplained_words(const struct check_result *res,
+				    const struct grade_figures *plain, const char *cam,
+				    const char *first, char *buf, size_t size)
+{
+	if (plain->psnr >= CHECK_NEAR_PSNR)
+		snprintf(buf, size, "%s%s (%.1f dB; %.2f%% of the pixels differ): no known mistake comes "
+			 "nearer (the nearest, %s, reaches %.1f dB), so what remains is small: %sa "
+			 "difference no known mistake makes (see where with --diff)", cam,
+			 res->moved ? "it nearly matches" : "nearly matches", plain->psnr,
+			 100.0 * plain->off2, first, res->ranks[0].fig.psnr,
+			 res->moved ? "the camera found a little off, or " : "");
+	else
+		snprintf(buf, size, "%s%snone of the known mistakes comes close (the nearest, %s, "
+			 "reaches %.1f dB against the reference's %.1f dB)", cam,
+			 res->moved ? "it differs: " : "", first, res->ranks[0].fig.psnr, plain->psnr);
+}
+
 void check_diagnosis(const struct check_reference *ref, const struct check_result *res,
 		     char *buf, size_t size)
 {
@@ -137,17 +156,8 @@ void check_diagnosis(const struct check_reference *ref, const struct check_resul
 			 "though %.2f%% of the pixels still differ: %s; then look for another mistake",
 			 cam, res->moved ? "it differs: " : "", first, equal[0] ? ", or equally " : "",
 			 equal, res->ranks[0].fig.psnr, plain->psnr, 100.0 * res->ranks[0].fig.off2, fix);
-	else if (plain->psnr >= CHECK_NEAR_PSNR)
-		snprintf(buf, size, "%s%s (%.1f dB; %.2f%% of the pixels differ): no known mistake comes "
-			 "nearer (the nearest, %s, reaches %.1f dB), so what remains is small: %sa "
-			 "difference no known mistake makes (see where with --diff)", cam,
-			 res->moved ? "it nearly matches" : "nearly matches", plain->psnr,
-			 100.0 * plain->off2, first, res->ranks[0].fig.psnr,
-			 res->moved ? "the camera found a little off, or " : "");
 	else
-		snprintf(buf, size, "%s%snone of the known mistakes comes close (the nearest, %s, "
-			 "reaches %.1f dB against the reference's %.1f dB)", cam,
-			 res->moved ? "it differs: " : "", first, res->ranks[0].fig.psnr, plain->psnr);
+		check_unexplained_words(res, plain, cam, first, buf, size);
 }
 
 /* How many objects of each keyword a list names, as "the 3 spheres and 2
