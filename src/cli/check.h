@@ -131,6 +131,7 @@ struct check_result {
 	bool truncated;			/* nearer the reference converted by truncation */
 	char size_note[200];		/* "" or why it was compared at another size */
 	bool floor_textured;		/* the floor is no two-colour checker: judged without it */
+	bool floor_alone;		/* the camera fit found a view of no object (not taken) */
 	struct check_view own;		/* the reference at the image's size when it is
 					 * not the scene's (else empty) */
 	/* The camera: fitted when the image does not fit the given one. */

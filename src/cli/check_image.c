@@ -101,6 +101,37 @@ static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n
 	return n > 0 && (a || b);
 }
 
+/* A camera found counts only where it shows at least this share of its
+ * pixels on the scene's objects: a view of the floor and the sky alone
+ * looks the same from anywhere at its height and tilt (the checker
+ * repeats), and a dark image of anything fits such a view (two real
+ * renders were explained by a view of the bare floor from a thousand
+ * units away). */
+#define CHECK_MOVED_OBJECT_SHARE 0.005
+
+/* Whether view v shows the scene's objects on CHECK_MOVED_OBJECT_SHARE
+ * of its pixels, or the scene has none to show (*shows). */
+static int check_shows_objects(const struct check_reference *ref, const struct check_view *v,
+			       bool *shows, struct diag *d)
+{
+	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i, seen = 0;
+	int32_t *ids;
+	int rc;
+
+	*shows = true;
+	if (scene_shape_count(ref->scene) <= (scene_has_floor(ref->scene) ? 1u : 0u))
+		return 0;
+	if (!(ids = rt_reallocarray(NULL, total, sizeof(*ids))))
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	if ((rc = grade_object_ids(&v->job, ids, d)) == 0) {
+		for (i = 0; i < total; i++)
+			seen += ids[i] >= 0;
+		*shows = (double)seen >= CHECK_MOVED_OBJECT_SHARE * (double)total;
+	}
+	rt_free(ids);
+	return rc;
+}
+
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
@@ -141,6 +172,13 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		     ((found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
 		       fit.score <= CHECK_MOVED_GREY_MSE && found.psnr > given.psnr));
+	if (res->moved) {
+		bool shows;
+		if ((rc = check_shows_objects(ref, &res->found, &shows, d)) < 0)
+			return rc;
+		res->moved = shows;
+		res->floor_alone = !shows;
+	}
 	if (!res->moved)
 		check_view_free(&res->found);
 	return 0;

@@ -118,7 +118,8 @@ static void compare_json(const struct check_options *o, const struct check_refer
 	json_psnr(res->moved ? res->fig_found.psnr : res->fig.psnr);
 	printf(", \"psnr_given\": ");
 	json_psnr(res->fig.psnr);
-	printf(", \"candidates\": %ld}", res->fit_evals);
+	printf(", \"candidates\": %ld, \"floor_alone\": %s}", res->fit_evals,
+	       res->floor_alone ? "true" : "false");
 	compare_json_best(ref, res);
 	printf(", \"objects\": [");
 	for (k = 0; k < res->n_objects; k++) {
@@ -206,7 +207,9 @@ static void compare_text(const struct check_options *o, const struct check_refer
 		print_psnr(res->fig_found.psnr);
 		printf("    (%.2f dB at the camera given; %ld ties there)\n", res->fig.psnr,
 		       res->found.n_ties);
-	}
+	} else if (res->floor_alone)
+		printf("camera: none found: the nearest view the fit found shows no object, only the "
+		       "floor and the sky, which look alike from many places\n");
 	printf("verdict: %s\n", res->verdict == CHECK_MATCH
 		       ? (res->moved ? "MATCH at the camera found" : "MATCH") : "DIFFERS");
 	check_objects_line(res, buf, sizeof(buf));

@@ -152,6 +152,18 @@ run compare -q -s 30 --no-camera-fit "$SCENE" "$I/faint.ppm"
 check faint-exit [ "$rc" -eq 3 ]
 check faint-nearly grep -q '^nearly matches ([4-5][0-9]\.[0-9] dB; 20\.00% of the pixels differ): no known mistake comes nearer' "$T/out"
 
+# A view of the bare floor (no object in it): any camera at its height
+# and tilt sees the same checker, so no camera found is stood by (before,
+# one 12 degrees wide looking away from the scene was "found").
+"$W" -q -s 48 --eye 400,380,60 --look 400,420,0 --up 0,0,1 --fov 60 -o "$I/floor-only.png" "$SCENE"
+run compare -q --json -s 48 "$SCENE" "$I/floor-only.png"
+check floor-alone python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["verdict"] == "differs" and j["camera"]["fitted"] is True, j
+assert j["camera"]["moved"] is False and j["camera"]["floor_alone"] is True, j["camera"]
+' "$T/out"
+
 # Every dialect, and the render options passed through to the reference.
 for f in scene.txt spot.txt pyramid.txt nearfar.txt; do
 	"$W" -q -s 24 -o "$I/$f.png" "$ROOT/scenes/$f"
