@@ -168,6 +168,15 @@ int check_image(struct check_reference *ref, const char *path, struct check_resu
 int check_image_data(struct check_reference *ref, const char *name, const unsigned char *data,
 		     size_t len, struct check_result *res, struct diag *d);
 void check_result_free(struct check_result *res);
+/* Whether view v shows the scene's objects on CHECK_MOVED_OBJECT_SHARE of
+ * its pixels, or the scene has none to show (*shows). */
+int check_shows_objects(const struct scene *scene, const struct check_view *v, bool *shows,
+			struct diag *d);
+/* The submission as it is judged at view v: itself (judged left empty),
+ * or with a textured floor's pixels taken from the reference (that floor
+ * is not judged); sets res->floor_textured. */
+int check_judged(const struct check_view *v, struct check_result *res, struct image *judged,
+		 struct diag *d);
 
 /* The difference picture of res: against the reference of its
  * explanation's camera, in the conversion its verdict used, with the ties

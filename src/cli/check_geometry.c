@@ -1,7 +1,8 @@
 /* What the check reads off the pictures themselves: how far one camera's
  * view moves from another's and how near the submission comes to each
- * (whether a found camera is another one), and whether a submission's
- * floor is textured where the reference's is a plain checker. */
+ * (whether a found camera is another one, and whether it shows any
+ * object), and whether a submission's floor is textured where the
+ * reference's is a plain checker (then judged without it). */
 #include <math.h>
 #include <stdbool.h>
 #include <stdlib.h>
@@ -262,4 +263,63 @@ int check_quarter_turn(const struct check_reference *ref, struct check_view *fou
 		check_view_free(&v);
 	}
 	return 0;
+}
+
+/* A camera found counts only where it shows at least this share of its
+ * pixels on the scene's objects: a view of the floor and the sky alone
+ * looks the same from anywhere at its height and tilt (the checker
+ * repeats), and a dark image of anything fits such a view (two real
+ * renders were explained by a view of the bare floor from a thousand
+ * units away). */
+#define CHECK_MOVED_OBJECT_SHARE 0.005
+
+int check_shows_objects(const struct scene *scene, const struct check_view *v, bool *shows,
+			struct diag *d)
+{
+	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i, seen = 0;
+	int32_t *ids;
+	int rc;
+
+	*shows = true;
+	if (scene_shape_count(scene) <= (scene_has_floor(scene) ? 1u : 0u))
+		return 0;
+	if (!(ids = rt_reallocarray(NULL, total, sizeof(*ids))))
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	if ((rc = grade_object_ids(&v->job, ids, d)) == 0) {
+		for (i = 0; i < total; i++)
+			seen += ids[i] >= 0;
+		*shows = (double)seen >= CHECK_MOVED_OBJECT_SHARE * (double)total;
+	}
+	rt_free(ids);
+	return rc;
+}
+
+int check_judged(const struct check_view *v, struct check_result *res, struct image *judged,
+		 struct diag *d)
+{
+	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i;
+	int32_t *ids = rt_reallocarray(NULL, total, sizeof(*ids));
+	int rc;
+
+	memset(judged, 0, sizeof(*judged));
+	if (!ids)
+		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
+	if ((rc = grade_object_ids(&v->job, ids, d)) < 0)
+		goto out;
+	/* A floor the fit found another shape of is a checker, however fine
+	 * its cells look at the image's size. */
+	res->floor_textured = !(res->fitted && (res->fit.cause == RT_CAUSE_FLOOR_SIZE ||
+						res->fit.cause == RT_CAUSE_FLOOR_HORIZON)) &&
+			      check_floor_textured(&v->image, &res->image, ids);
+	if (!res->floor_textured)
+		goto out;
+	if ((rc = image_alloc(judged, res->image.width, res->image.height, d)) < 0)
+		goto out;
+	memcpy(judged->pixels, res->image.pixels, total * 3);
+	for (i = 0; i < total; i++)
+		if (ids[i] == GRADE_ID_FLOOR)
+			memcpy(judged->pixels + 3 * i, v->image.pixels + 3 * i, 3);
+out:
+	rt_free(ids);
+	return rc;
 }

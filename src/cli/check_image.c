@@ -101,37 +101,6 @@ static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n
 	return n > 0 && (a || b);
 }
 
-/* A camera found counts only where it shows at least this share of its
- * pixels on the scene's objects: a view of the floor and the sky alone
- * looks the same from anywhere at its height and tilt (the checker
- * repeats), and a dark image of anything fits such a view (two real
- * renders were explained by a view of the bare floor from a thousand
- * units away). */
-#define CHECK_MOVED_OBJECT_SHARE 0.005
-
-/* Whether view v shows the scene's objects on CHECK_MOVED_OBJECT_SHARE
- * of its pixels, or the scene has none to show (*shows). */
-static int check_shows_objects(const struct check_reference *ref, const struct check_view *v,
-			       bool *shows, struct diag *d)
-{
-	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i, seen = 0;
-	int32_t *ids;
-	int rc;
-
-	*shows = true;
-	if (scene_shape_count(ref->scene) <= (scene_has_floor(ref->scene) ? 1u : 0u))
-		return 0;
-	if (!(ids = rt_reallocarray(NULL, total, sizeof(*ids))))
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
-	if ((rc = grade_object_ids(&v->job, ids, d)) == 0) {
-		for (i = 0; i < total; i++)
-			seen += ids[i] >= 0;
-		*shows = (double)seen >= CHECK_MOVED_OBJECT_SHARE * (double)total;
-	}
-	rt_free(ids);
-	return rc;
-}
-
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
@@ -174,7 +143,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		       fit.score <= CHECK_MOVED_GREY_MSE && found.psnr > given.psnr));
 	if (res->moved) {
 		bool shows;
-		if ((rc = check_shows_objects(ref, &res->found, &shows, d)) < 0)
+		if ((rc = check_shows_objects(ref->scene, &res->found, &shows, d)) < 0)
 			return rc;
 		res->moved = shows;
 		res->floor_alone = !shows;
@@ -198,38 +167,6 @@ static int check_objects(const struct check_reference *ref, struct check_result 
 	if (rc == 0)
 		rc = grade_objects(&v->job, res->ids, shown, &res->image, v->ties, &res->objects,
 				   &res->n_objects, d);
-	return rc;
-}
-
-/* The submission as it is judged at view v: itself, or with a textured
- * floor's pixels taken from the reference (that floor is not judged). */
-static int check_judged(const struct check_view *v, struct check_result *res,
-			struct image *judged, struct diag *d)
-{
-	size_t total = (size_t)v->camera.width * (size_t)v->camera.height, i;
-	int32_t *ids = rt_reallocarray(NULL, total, sizeof(*ids));
-	int rc;
-
-	memset(judged, 0, sizeof(*judged));
-	if (!ids)
-		return diag_fail(d, RT_E_NOMEM, "out of memory for the object ids");
-	if ((rc = grade_object_ids(&v->job, ids, d)) < 0)
-		goto out;
-	/* A floor the fit found another shape of is a checker, however fine
-	 * its cells look at the image's size. */
-	res->floor_textured = !(res->fitted && (res->fit.cause == RT_CAUSE_FLOOR_SIZE ||
-						res->fit.cause == RT_CAUSE_FLOOR_HORIZON)) &&
-			      check_floor_textured(&v->image, &res->image, ids);
-	if (!res->floor_textured)
-		goto out;
-	if ((rc = image_alloc(judged, res->image.width, res->image.height, d)) < 0)
-		goto out;
-	memcpy(judged->pixels, res->image.pixels, total * 3);
-	for (i = 0; i < total; i++)
-		if (ids[i] == GRADE_ID_FLOOR)
-			memcpy(judged->pixels + 3 * i, v->image.pixels + 3 * i, 3);
-out:
-	rt_free(ids);
 	return rc;
 }
 
