@@ -87,4 +87,6 @@ int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
 #define SUPPORT_RUN(tests, argc, argv) \
 	support_run(__FILE__, tests, sizeof(tests) / sizeof(tests[0]), argc, argv)
 
+#include "support_main.h"
+
 #endif

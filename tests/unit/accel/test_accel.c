@@ -1074,28 +1074,18 @@ static void test_accel_huge_boxes_are_tested_by_every_ray(void **state)
 	scene_destroy(s);
 }
 
-
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_accel_random_scenes_match_brute_force),
-		cmocka_unit_test(test_accel_wide_walks_match_the_base_walks),
-		cmocka_unit_test(test_accel_all_shapes_at_one_centre),
-		cmocka_unit_test(test_accel_one_shape),
-		cmocka_unit_test(test_accel_no_shapes),
-		cmocka_unit_test(test_accel_many_shapes),
-		cmocka_unit_test(test_accel_many_at_one_point),
-		cmocka_unit_test(test_accel_negative_zero_direction),
-		cmocka_unit_test(test_accel_rays_grazing_box_bounds),
-		cmocka_unit_test(test_accel_rays_grazing_clip_faces),
-		cmocka_unit_test(test_accel_threads_build_the_same_tree),
-		cmocka_unit_test(test_accel_threads_median_splits),
-		cmocka_unit_test(test_accel_threads_collapse_the_same_tree),
-		cmocka_unit_test(test_accel_collapse_room_holds_the_fullest_tree),
-		cmocka_unit_test(test_accel_ties_go_to_the_first_in_the_scene),
-		cmocka_unit_test(test_accel_solids_on_the_floor_tie_at_their_edges),
-		cmocka_unit_test(test_accel_huge_boxes_are_tested_by_every_ray),
-		cmocka_unit_test(test_accel_pyramid_edge_on_the_floor),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_accel_random_scenes_match_brute_force,
+			   test_accel_wide_walks_match_the_base_walks,
+			   test_accel_all_shapes_at_one_centre, test_accel_one_shape,
+			   test_accel_no_shapes, test_accel_many_shapes,
+			   test_accel_many_at_one_point, test_accel_negative_zero_direction,
+			   test_accel_rays_grazing_box_bounds,
+			   test_accel_rays_grazing_clip_faces,
+			   test_accel_threads_build_the_same_tree,
+			   test_accel_threads_median_splits,
+			   test_accel_threads_collapse_the_same_tree,
+			   test_accel_collapse_room_holds_the_fullest_tree,
+			   test_accel_ties_go_to_the_first_in_the_scene,
+			   test_accel_solids_on_the_floor_tie_at_their_edges,
+			   test_accel_huge_boxes_are_tested_by_every_ray,
+			   test_accel_pyramid_edge_on_the_floor))

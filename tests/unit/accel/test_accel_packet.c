@@ -649,17 +649,10 @@ static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_packet_random_scenes_match_single_rays),
-		cmocka_unit_test(test_packet_ties_keep_the_single_walks_shape),
-		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
-		cmocka_unit_test(test_packet_rays_at_the_float_limits),
-		cmocka_unit_test(test_packet_unbounded_and_empty),
-		cmocka_unit_test(test_packet_shape_packet_method),
-		cmocka_unit_test(test_packet_stray_bits_of_a_method_are_dropped),
-		cmocka_unit_test(test_packet_default_method_full_mask),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_packet_random_scenes_match_single_rays,
+			   test_packet_ties_keep_the_single_walks_shape,
+			   test_packet_rays_along_faces_and_edges,
+			   test_packet_rays_at_the_float_limits,
+			   test_packet_unbounded_and_empty, test_packet_shape_packet_method,
+			   test_packet_stray_bits_of_a_method_are_dropped,
+			   test_packet_default_method_full_mask))

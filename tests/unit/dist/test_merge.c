@@ -155,11 +155,5 @@ static void test_merge_gap_in_last_row_or_column(void **state)
 	remove_tiles(&t);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_merge_every_pixel_back_in_place),
-		cmocka_unit_test(test_merge_gap_in_last_row_or_column),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_merge_every_pixel_back_in_place,
+			   test_merge_gap_in_last_row_or_column))

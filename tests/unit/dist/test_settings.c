@@ -324,19 +324,8 @@ static void test_settings_options_nearfar(void **state)
 	assert_int_equal(settings_format_options(&s, options, sizeof(options)), -RT_E_INVALID);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_settings_canonical_default),
-		cmocka_unit_test(test_settings_canonical_dialect),
-		cmocka_unit_test(test_settings_canonical_digits),
-		cmocka_unit_test(test_settings_canonical_no_floor),
-		cmocka_unit_test(test_settings_canonical_bounds),
-		cmocka_unit_test(test_settings_options_round_trip),
-		cmocka_unit_test(test_settings_options_text),
-		cmocka_unit_test(test_settings_canonical_nearfar),
-		cmocka_unit_test(test_settings_options_nearfar),
-		cmocka_unit_test(test_settings_canonical_plugins),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_settings_canonical_default, test_settings_canonical_dialect,
+			   test_settings_canonical_digits, test_settings_canonical_no_floor,
+			   test_settings_canonical_bounds, test_settings_options_round_trip,
+			   test_settings_options_text, test_settings_canonical_nearfar,
+			   test_settings_options_nearfar, test_settings_canonical_plugins))

@@ -15,21 +15,24 @@
 
 static char tmpdir[64];
 
-static int setup_dir(void)
+static int setup_dir(void **state)
 {
 	const char *base = getenv("TMPDIR");
 
+	(void)state;
 	snprintf(tmpdir, sizeof(tmpdir), "%s/test_tile.XXXXXX", base && *base ? base : "/tmp");
 	return mkdtemp(tmpdir) ? 0 : -1;
 }
 
-static void teardown_dir(void)
+static int teardown_dir(void **state)
 {
 	char cmd[128];
 
+	(void)state;
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", tmpdir);
 	if (system(cmd) != 0)
 		fprintf(stderr, "test_tile: could not remove %s\n", tmpdir);
+	return 0;
 }
 
 static const char *tmp_path(const char *name)
@@ -367,25 +370,9 @@ static void test_tile_write_refused(void **state)
 	image_free(&img);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_tile_info_init),
-		cmocka_unit_test(test_tile_check_region),
-		cmocka_unit_test(test_tile_text_round_trip),
-		cmocka_unit_test(test_tile_text_refused),
-		cmocka_unit_test(test_tile_png_round_trip),
-		cmocka_unit_test(test_tile_png_chunks),
-		cmocka_unit_test(test_tile_png_damaged),
-		cmocka_unit_test(test_tile_not_a_tile),
-		cmocka_unit_test(test_tile_png_same_image_data),
-		cmocka_unit_test(test_tile_write_refused),
-	};
-	int rc;
-
-	if (setup_dir() < 0)
-		return 1;
-	rc = SUPPORT_RUN(tests, argc, argv);
-	teardown_dir();
-	return rc;
-}
+SUPPORT_MAIN_AROUND(setup_dir, teardown_dir,
+		    SUPPORT_TESTS(test_tile_info_init, test_tile_check_region,
+				  test_tile_text_round_trip, test_tile_text_refused,
+				  test_tile_png_round_trip, test_tile_png_chunks,
+				  test_tile_png_damaged, test_tile_not_a_tile,
+				  test_tile_png_same_image_data, test_tile_write_refused))

@@ -218,14 +218,5 @@ static void test_causes_other_floor_in_the_trace(void **state)
 	scene_destroy(j.s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_causes_forms),
-		cmocka_unit_test(test_causes_combine),
-		cmocka_unit_test(test_causes_spot_cone),
-		cmocka_unit_test(test_causes_other_floor_in_the_trace),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_causes_forms, test_causes_combine, test_causes_spot_cone,
+			   test_causes_other_floor_in_the_trace))

@@ -273,17 +273,7 @@ static void test_grade_wrap_both_ways(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_grade_figures_by_hand),
-		cmocka_unit_test(test_grade_gate_edges),
-		cmocka_unit_test(test_grade_transforms),
-		cmocka_unit_test(test_grade_diff_image),
-		cmocka_unit_test(test_grade_allocation_failures),
-		cmocka_unit_test(test_grade_outliers_left_out),
-		cmocka_unit_test(test_grade_wrap_both_ways),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_grade_figures_by_hand, test_grade_gate_edges,
+			   test_grade_transforms, test_grade_diff_image,
+			   test_grade_allocation_failures, test_grade_outliers_left_out,
+			   test_grade_wrap_both_ways))

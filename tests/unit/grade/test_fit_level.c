@@ -405,18 +405,9 @@ static void test_fit_level_with_a_cause(void **state)
 	setup_free(&s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_fit_view_round_trip),
-		cmocka_unit_test(test_fit_moves),
-		cmocka_unit_test(test_fit_level_true_camera_scores_nothing),
-		cmocka_unit_test(test_fit_blur_keeps_flat_and_sum),
-		cmocka_unit_test(test_fit_blur_is_the_gaussian),
-		cmocka_unit_test(test_fit_level_weighs_aliased_cells),
-		cmocka_unit_test(test_fit_level_jacobian_against_differences),
-		cmocka_unit_test(test_fit_level_with_a_cause),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_fit_view_round_trip, test_fit_moves,
+			   test_fit_level_true_camera_scores_nothing,
+			   test_fit_blur_keeps_flat_and_sum, test_fit_blur_is_the_gaussian,
+			   test_fit_level_weighs_aliased_cells,
+			   test_fit_level_jacobian_against_differences,
+			   test_fit_level_with_a_cause))

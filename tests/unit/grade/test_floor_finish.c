@@ -168,12 +168,5 @@ static void test_floor_finish_ranked(void **state)
 	scene_destroy(t.s);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_floor_finish_found),
-		cmocka_unit_test(test_floor_finish_none),
-		cmocka_unit_test(test_floor_finish_ranked),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_floor_finish_found, test_floor_finish_none,
+			   test_floor_finish_ranked))

@@ -147,13 +147,5 @@ static void test_grade_diff_picture(void **state)
 	world_free(&w);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_grade_object_ids),
-		cmocka_unit_test(test_grade_objects_figures),
-		cmocka_unit_test(test_grade_diff_picture),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_grade_object_ids, test_grade_objects_figures,
+			   test_grade_diff_picture))

@@ -97,11 +97,4 @@ static void test_rank_exact_figures(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_rank_exact_figures),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_rank_exact_figures))

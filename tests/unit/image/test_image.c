@@ -509,22 +509,14 @@ static void test_image_write_fifo_directly(void **state)
 	image_free(&img);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_image_alloc),
-		cmocka_unit_test(test_image_format_from_path),
-		cmocka_unit_test(test_image_format_table),
-		cmocka_unit_test_setup_teardown(test_image_png_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_bmp_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_ppm_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test(test_image_writers_to_streams),
-		cmocka_unit_test_setup_teardown(test_image_write_replaces_existing, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_new_file_mode, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_missing_directory, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_unknown_format_and_cancel, setup_dir, teardown_dir),
-		cmocka_unit_test(test_image_write_dev_null),
-		cmocka_unit_test_setup_teardown(test_image_write_fifo_directly, setup_dir, teardown_dir),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_image_alloc, test_image_format_from_path,
+			   test_image_format_table),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_png_round_trip,
+				   test_image_bmp_round_trip, test_image_ppm_round_trip),
+	     SUPPORT_TESTS(test_image_writers_to_streams),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_write_replaces_existing,
+				   test_image_write_new_file_mode,
+				   test_image_write_missing_directory,
+				   test_image_write_unknown_format_and_cancel),
+	     SUPPORT_TESTS(test_image_write_dev_null),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_write_fifo_directly))

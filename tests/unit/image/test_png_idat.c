@@ -385,16 +385,7 @@ static void test_png_idat_bands_out_of_memory(void **state)
 	image_free(&img);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_png_idat_heights),
-		cmocka_unit_test(test_png_idat_out_of_memory),
-		cmocka_unit_test(test_png_idat_bands_same_stream),
-		cmocka_unit_test(test_png_idat_strip_waits_for_band_above),
-		cmocka_unit_test(test_png_writer_same_file),
-		cmocka_unit_test(test_png_idat_bands_out_of_memory),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_png_idat_heights, test_png_idat_out_of_memory,
+			   test_png_idat_bands_same_stream,
+			   test_png_idat_strip_waits_for_band_above, test_png_writer_same_file,
+			   test_png_idat_bands_out_of_memory))

@@ -283,17 +283,6 @@ static void test_loader_elf_checks(void **state)
 	free(good);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_loader_failures),
-		cmocka_unit_test(test_loader_failure_after_good),
-		cmocka_unit_test(test_loader_register_outside_init),
-		cmocka_unit_test(test_loader_records),
-		cmocka_unit_test(test_loader_dirs),
-		cmocka_unit_test(test_loader_dirs_yield),
-		cmocka_unit_test(test_loader_elf_checks),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_loader_failures, test_loader_failure_after_good,
+			   test_loader_register_outside_init, test_loader_records,
+			   test_loader_dirs, test_loader_dirs_yield, test_loader_elf_checks))

@@ -331,17 +331,9 @@ static void test_glass_file_objects_are_opaque(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_glass_through_the_centre),
-		cmocka_unit_test(test_glass_bends_by_snell),
-		cmocka_unit_test(test_glass_nested_bends_between_the_glasses),
-		cmocka_unit_test(test_glass_negated_quadric_is_the_same_glass),
-		cmocka_unit_test(test_glass_total_internal_reflection),
-		cmocka_unit_test(test_glass_casts_an_opaque_shadow),
-		cmocka_unit_test(test_glass_set_checks),
-		cmocka_unit_test(test_glass_file_objects_are_opaque),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_glass_through_the_centre, test_glass_bends_by_snell,
+			   test_glass_nested_bends_between_the_glasses,
+			   test_glass_negated_quadric_is_the_same_glass,
+			   test_glass_total_internal_reflection,
+			   test_glass_casts_an_opaque_shadow, test_glass_set_checks,
+			   test_glass_file_objects_are_opaque))

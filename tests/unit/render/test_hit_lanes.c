@@ -306,12 +306,5 @@ static void test_hit_lanes_fill(void **state)
 		shape_destroy(shapes[m]);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_hit_lanes_sets),
-		cmocka_unit_test(test_hit_lanes_fill),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_hit_lanes_sets),
+	     SUPPORT_TESTS(test_hit_lanes_fill))

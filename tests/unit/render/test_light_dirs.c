@@ -96,11 +96,5 @@ static void test_light_dirs_chosen_set(void **state)
 	check_set(light_dirs, "chosen");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_light_dirs_set),
-		cmocka_unit_test(test_light_dirs_chosen_set),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_light_dirs_set),
+	     SUPPORT_TESTS(test_light_dirs_chosen_set))

@@ -292,16 +292,10 @@ static void test_render_packet_small_tree_many_lights_and_a_spot(void **state)
 	check_small_tree(0, true);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_render_packet_classic_lights_same_image),
-		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
-		cmocka_unit_test(test_render_packet_glass_same_image),
-		cmocka_unit_test(test_render_packet_light_in_a_surface_plane),
-		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
-		cmocka_unit_test(test_render_packet_small_tree_reflections),
-		cmocka_unit_test(test_render_packet_small_tree_many_lights_and_a_spot),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_render_packet_classic_lights_same_image,
+			   test_render_packet_spot_and_falloff_same_image,
+			   test_render_packet_glass_same_image,
+			   test_render_packet_light_in_a_surface_plane,
+			   test_render_packet_forced_on_a_small_tree,
+			   test_render_packet_small_tree_reflections,
+			   test_render_packet_small_tree_many_lights_and_a_spot))

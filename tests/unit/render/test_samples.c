@@ -191,14 +191,7 @@ static void test_samples_packets_same_as_single_rays(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_samples_pixel_is_the_clamped_mean),
-		cmocka_unit_test(test_samples_are_the_big_image_centres),
-		cmocka_unit_test(test_samples_one_is_the_default),
-		cmocka_unit_test(test_samples_threads_and_regions),
-		cmocka_unit_test(test_samples_packets_same_as_single_rays),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_samples_pixel_is_the_clamped_mean,
+			   test_samples_are_the_big_image_centres,
+			   test_samples_one_is_the_default, test_samples_threads_and_regions,
+			   test_samples_packets_same_as_single_rays))

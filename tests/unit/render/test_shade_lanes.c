@@ -185,11 +185,5 @@ static void test_shade_lanes_chosen_set(void **state)
 	check_set(shade_lanes, "chosen");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_shade_lanes_set),
-		cmocka_unit_test(test_shade_lanes_chosen_set),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_shade_lanes_set),
+	     SUPPORT_TESTS(test_shade_lanes_chosen_set))

@@ -315,22 +315,11 @@ static void test_cube_mesh(void **state)
 	mesh_free(&m);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_cube_hit_shrinks_t_max, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_hit_each_face, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_slanted_hit, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_miss_keeps_t_max, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_edges_and_corners, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_from_inside, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_t_min_and_non_unit, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_bounds_and_table, setup_cube, teardown_cube),
-		cmocka_unit_test(test_cube_degenerate_by_rounding),
-		cmocka_unit_test(test_cube_parse),
-		cmocka_unit_test(test_cube_parse_errors),
-		cmocka_unit_test(test_cube_export_pov),
-		cmocka_unit_test_setup_teardown(test_cube_mesh, setup_cube, teardown_cube),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_cube, teardown_cube, test_cube_hit_shrinks_t_max,
+				   test_cube_hit_each_face, test_cube_slanted_hit,
+				   test_cube_miss_keeps_t_max, test_cube_edges_and_corners,
+				   test_cube_from_inside, test_cube_t_min_and_non_unit,
+				   test_cube_bounds_and_table),
+	     SUPPORT_TESTS(test_cube_degenerate_by_rounding, test_cube_parse,
+			   test_cube_parse_errors, test_cube_export_pov),
+	     SUPPORT_FIXTURE_TESTS(setup_cube, teardown_cube, test_cube_mesh))

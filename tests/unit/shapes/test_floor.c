@@ -423,23 +423,15 @@ static void test_floor_infinite_export_pov(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_floor_hit_from_above_and_below, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_miss_parallel_behind, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_t_interval, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_extent_half_open, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_normal_is_up, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_tile_parity, setup_floor, teardown_floor),
-		cmocka_unit_test(test_floor_parity_other_sizes),
-		cmocka_unit_test_setup_teardown(test_floor_material_and_bounds, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_export_pov, setup_floor, teardown_floor),
-		cmocka_unit_test(test_floor_view_finite_keeps_rule),
-		cmocka_unit_test(test_floor_infinite_parity_negative),
-		cmocka_unit_test(test_floor_infinite_parity_far_out),
-		cmocka_unit_test(test_floor_infinite_everywhere),
-		cmocka_unit_test(test_floor_infinite_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_floor, teardown_floor,
+				   test_floor_hit_from_above_and_below,
+				   test_floor_miss_parallel_behind, test_floor_t_interval,
+				   test_floor_extent_half_open, test_floor_normal_is_up,
+				   test_floor_tile_parity),
+	     SUPPORT_TESTS(test_floor_parity_other_sizes),
+	     SUPPORT_FIXTURE_TESTS(setup_floor, teardown_floor, test_floor_material_and_bounds,
+				   test_floor_export_pov),
+	     SUPPORT_TESTS(test_floor_view_finite_keeps_rule,
+			   test_floor_infinite_parity_negative,
+			   test_floor_infinite_parity_far_out, test_floor_infinite_everywhere,
+			   test_floor_infinite_export_pov))

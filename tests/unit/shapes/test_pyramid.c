@@ -508,23 +508,12 @@ static void test_pyramid_mesh(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_pyramid_hit_shrinks_t_max, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_hit_each_face, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_miss_keeps_t_max, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_apex_and_edges, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_from_inside, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_t_min_and_behind, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_non_unit_direction, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test(test_pyramid_unit_normals),
-		cmocka_unit_test(test_pyramid_bounds_both_placements),
-		cmocka_unit_test(test_pyramid_degenerate_by_rounding),
-		cmocka_unit_test(test_pyramid_parse_both_placements),
-		cmocka_unit_test(test_pyramid_parse_errors),
-		cmocka_unit_test(test_pyramid_export_pov),
-		cmocka_unit_test(test_pyramid_mesh),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_pyramid, teardown_pyramid,
+				   test_pyramid_hit_shrinks_t_max, test_pyramid_hit_each_face,
+				   test_pyramid_miss_keeps_t_max, test_pyramid_apex_and_edges,
+				   test_pyramid_from_inside, test_pyramid_t_min_and_behind,
+				   test_pyramid_non_unit_direction),
+	     SUPPORT_TESTS(test_pyramid_unit_normals, test_pyramid_bounds_both_placements,
+			   test_pyramid_degenerate_by_rounding,
+			   test_pyramid_parse_both_placements, test_pyramid_parse_errors,
+			   test_pyramid_export_pov, test_pyramid_mesh))

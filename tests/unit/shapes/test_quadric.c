@@ -574,25 +574,13 @@ static void test_quadric_closed_only_as_a_whole_ellipsoid(void **state)
 	assert_false(closed(saddle, 0, 0, 0, 0, 0, 0));
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_quadric_unclipped_sphere),
-		cmocka_unit_test(test_quadric_tangent_inside_non_unit),
-		cmocka_unit_test(test_quadric_clipped_near_root_falls_through),
-		cmocka_unit_test(test_quadric_clip_box_inclusive),
-		cmocka_unit_test(test_quadric_clip_each_axis),
-		cmocka_unit_test(test_quadric_bounds_only_when_clipped_on_all_axes),
-		cmocka_unit_test(test_quadric_clip_on_three_axes),
-		cmocka_unit_test(test_quadric_linear_case),
-		cmocka_unit_test(test_quadric_unit_normals),
-		cmocka_unit_test(test_quadric_cross_terms),
-		cmocka_unit_test(test_quadric_normal_each_term),
-		cmocka_unit_test(test_quadric_normal_all_terms),
-		cmocka_unit_test(test_quadric_hit_all_terms),
-		cmocka_unit_test(test_quadric_parse),
-		cmocka_unit_test(test_quadric_export_pov),
-		cmocka_unit_test(test_quadric_closed_only_as_a_whole_ellipsoid),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_quadric_unclipped_sphere, test_quadric_tangent_inside_non_unit,
+			   test_quadric_clipped_near_root_falls_through,
+			   test_quadric_clip_box_inclusive, test_quadric_clip_each_axis,
+			   test_quadric_bounds_only_when_clipped_on_all_axes,
+			   test_quadric_clip_on_three_axes, test_quadric_linear_case,
+			   test_quadric_unit_normals, test_quadric_cross_terms,
+			   test_quadric_normal_each_term, test_quadric_normal_all_terms,
+			   test_quadric_hit_all_terms, test_quadric_parse,
+			   test_quadric_export_pov,
+			   test_quadric_closed_only_as_a_whole_ellipsoid))

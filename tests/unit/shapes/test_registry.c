@@ -296,18 +296,9 @@ static void test_registry_every_keyword_parses(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_registry_finds_every_keyword),
-		cmocka_unit_test(test_registry_dialect_masks),
-		cmocka_unit_test(test_registry_mask_zero_is_every_dialect),
-		cmocka_unit_test(test_registry_keyword_list_per_dialect),
-		cmocka_unit_test(test_registry_keyword_lists_threads),
-		cmocka_unit_test(test_registry_unknown_is_null),
-		cmocka_unit_test(test_registry_keyword_list),
-		cmocka_unit_test(test_registry_tables_complete),
-		cmocka_unit_test(test_registry_every_keyword_parses),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_registry_finds_every_keyword, test_registry_dialect_masks,
+			   test_registry_mask_zero_is_every_dialect,
+			   test_registry_keyword_list_per_dialect,
+			   test_registry_keyword_lists_threads, test_registry_unknown_is_null,
+			   test_registry_keyword_list, test_registry_tables_complete,
+			   test_registry_every_keyword_parses))

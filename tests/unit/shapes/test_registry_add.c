@@ -171,13 +171,5 @@ static void test_registry_full_of_long_keywords(void **state)
 	assert_non_null(strstr(d.msg, "is not a word"));
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_registry_add_and_remove),
-		cmocka_unit_test(test_registry_add_refuses),
-		cmocka_unit_test(test_registry_full_of_long_keywords),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_registry_add_and_remove, test_registry_add_refuses,
+			   test_registry_full_of_long_keywords))

@@ -220,20 +220,10 @@ static void test_sphere_export_pov(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_sphere_hit_shrinks_t_max, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_miss_keeps_t_max, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_tangent, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_from_inside, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_t_min_respected, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_non_unit_direction, setup_sphere, teardown_sphere),
-		cmocka_unit_test(test_sphere_unit_normals),
-		cmocka_unit_test(test_sphere_hit_off_centre),
-		cmocka_unit_test(test_sphere_bounds_and_defaults),
-		cmocka_unit_test(test_sphere_parse),
-		cmocka_unit_test(test_sphere_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_sphere, teardown_sphere, test_sphere_hit_shrinks_t_max,
+				   test_sphere_miss_keeps_t_max, test_sphere_tangent,
+				   test_sphere_from_inside, test_sphere_t_min_respected,
+				   test_sphere_non_unit_direction),
+	     SUPPORT_TESTS(test_sphere_unit_normals, test_sphere_hit_off_centre,
+			   test_sphere_bounds_and_defaults, test_sphere_parse,
+			   test_sphere_export_pov))

@@ -224,20 +224,12 @@ static void test_triangle_export_pov(void **state)
 	shape_destroy(line);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_triangle_hit_from_both_sides, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_edges_inclusive, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_miss_behind_parallel, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_t_interval, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_starting_on_surface, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_non_unit_direction, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_unit_normal, setup_triangle, teardown_triangle),
-		cmocka_unit_test(test_triangle_bounds),
-		cmocka_unit_test_setup_teardown(test_triangle_degenerate, setup_triangle, teardown_triangle),
-		cmocka_unit_test(test_triangle_parse),
-		cmocka_unit_test(test_triangle_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_triangle, teardown_triangle,
+				   test_triangle_hit_from_both_sides,
+				   test_triangle_edges_inclusive,
+				   test_triangle_miss_behind_parallel, test_triangle_t_interval,
+				   test_triangle_starting_on_surface,
+				   test_triangle_non_unit_direction, test_triangle_unit_normal),
+	     SUPPORT_TESTS(test_triangle_bounds),
+	     SUPPORT_FIXTURE_TESTS(setup_triangle, teardown_triangle, test_triangle_degenerate),
+	     SUPPORT_TESTS(test_triangle_parse, test_triangle_export_pov))

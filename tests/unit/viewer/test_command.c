@@ -327,17 +327,7 @@ static void test_command_too_small(void **state)
 	assert_int_equal(command_format(cmd, 9, "scene.txt", RT_DIALECT_AUTO, &set), -RT_E_RANGE);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_command_round_trips_camera),
-		cmocka_unit_test(test_command_default_text),
-		cmocka_unit_test(test_command_carries_image_options),
-		cmocka_unit_test(test_command_nearfar_round_trip),
-		cmocka_unit_test(test_command_carries_dialect_and_floor),
-		cmocka_unit_test(test_command_quotes_scene),
-		cmocka_unit_test(test_command_quotes_texture_paths),
-		cmocka_unit_test(test_command_too_small),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_command_round_trips_camera, test_command_default_text,
+			   test_command_carries_image_options, test_command_nearfar_round_trip,
+			   test_command_carries_dialect_and_floor, test_command_quotes_scene,
+			   test_command_quotes_texture_paths, test_command_too_small))
