@@ -199,3 +199,58 @@ struct scene *support_prepared(const char *text, bool with_floor)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	return s;
 }
+
+int support_hold_shape(void **state, struct shape *s)
+{
+	*state = s;
+	return s ? 0 : -1;
+}
+
+int support_drop_shape(void **state)
+{
+	shape_destroy(*state);
+	return 0;
+}
+
+void support_assert_hit(const struct shape *s, const struct ray *r, double t_min, double *t_max,
+			double t, double eps, const char *file, int line)
+{
+	*t_max = INFINITY;
+	if (!shape_intersect(s, r, t_min, t_max)) {
+		print_error("the ray missed, expected a hit at t = %.17g\n", t);
+		_fail(file, line);
+	}
+	support_assert_near(*t_max, t, eps, "t_max", file, line);
+}
+
+void support_assert_misses(const struct shape *s, const double (*rays)[6], size_t n)
+{
+	size_t i;
+
+	for (i = 0; i < n; i++) {
+		struct ray r = support_ray(rays[i][0], rays[i][1], rays[i][2], rays[i][3],
+					   rays[i][4], rays[i][5]);
+		double t_max = 42.0;
+		if (shape_intersect(s, &r, 0.0, &t_max)) {
+			print_error("ray %zu hit at t = %g\n", i, t_max);
+			fail();
+		}
+		assert_near(t_max, 42.0, 0.0);
+	}
+}
+
+void support_assert_object_error(const struct shape_ops *ops, const struct support_object_error *e)
+{
+	/* Not NULL before: the parse must clear it. */
+	struct shape *s = (struct shape *)&s;
+	struct diag d;
+
+	assert_int_equal(support_parse_object(ops, e->text, &s, &d), -e->rc);
+	assert_null(s);
+	assert_string_equal(d.file, "test.txt");
+	if (d.line != e->line || d.col != e->col || !strstr(d.msg, e->msg)) {
+		print_error("%s:%d:%d: %s\nexpected %d:%d: ...%s...\n", d.file, d.line, d.col, d.msg,
+			    e->line, e->col, e->msg);
+		fail();
+	}
+}

@@ -35,6 +35,31 @@ struct ray support_ray(double ox, double oy, double oz, double dx, double dy, do
 /* The text a shape exports to POV-Ray, NUL-terminated; the caller frees it. */
 char *support_export_pov(const struct shape *s, enum pov_finish finish);
 
+/* A cmocka fixture whose state is one shape: setup_X returns
+ * support_hold_shape(state, X_create(...)) (0, or -1 where creating it
+ * failed), and support_drop_shape destroys it after the test. */
+int support_hold_shape(void **state, struct shape *s);
+int support_drop_shape(void **state);
+
+/* A ray that must hit shape s past t_min: *t_max is set to infinity, and
+ * after the call holds the nearest hit, which must be t within eps. */
+#define assert_hit(s, r, t_min, t_max, t, eps) \
+	support_assert_hit((s), (r), (t_min), (t_max), (t), (eps), __FILE__, __LINE__)
+void support_assert_hit(const struct shape *s, const struct ray *r, double t_min, double *t_max,
+			double t, double eps, const char *file, int line);
+/* Each of the n rays (origin, then direction) misses s past 0 and leaves
+ * its t_max (42) as it was. */
+void support_assert_misses(const struct shape *s, const double (*rays)[6], size_t n);
+/* Object tokens that must not parse (support_parse_object): the error
+ * code, the line and column of the offending token, and a part of the
+ * message; no shape made. */
+struct support_object_error {
+	const char *text;
+	int rc, line, col;
+	const char *msg;
+};
+void support_assert_object_error(const struct shape_ops *ops, const struct support_object_error *e);
+
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */
 struct scene *support_parse(const char *text);

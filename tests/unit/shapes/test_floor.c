@@ -15,14 +15,7 @@
 /* The assignment's Floor(1000, 20). */
 static int setup_floor(void **state)
 {
-	*state = floor_create(1000.0, 20.0);
-	return *state ? 0 : -1;
-}
-
-static int teardown_floor(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, floor_create(1000.0, 20.0));
 }
 
 static bool white_at(const struct shape *s, double x, double y)
@@ -423,13 +416,13 @@ static void test_floor_infinite_export_pov(void **state)
 	shape_destroy(s);
 }
 
-SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_floor, teardown_floor,
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_floor, support_drop_shape,
 				   test_floor_hit_from_above_and_below,
 				   test_floor_miss_parallel_behind, test_floor_t_interval,
 				   test_floor_extent_half_open, test_floor_normal_is_up,
 				   test_floor_tile_parity),
 	     SUPPORT_TESTS(test_floor_parity_other_sizes),
-	     SUPPORT_FIXTURE_TESTS(setup_floor, teardown_floor, test_floor_material_and_bounds,
+	     SUPPORT_FIXTURE_TESTS(setup_floor, support_drop_shape, test_floor_material_and_bounds,
 				   test_floor_export_pov),
 	     SUPPORT_TESTS(test_floor_view_finite_keeps_rule,
 			   test_floor_infinite_parity_negative,

@@ -22,14 +22,7 @@ static const struct material mat = { { 1.0, 0.0, 0.0 }, 0.4, 0.2, 0.1, 0.3, 5.0,
  * that is x = 4 - z / 3; the others likewise. */
 static int setup_pyramid(void **state)
 {
-	*state = pyramid_create(vec3_make(0, 0, 0), 4.0, 6.0, &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_pyramid(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, pyramid_create(vec3_make(0, 0, 0), 4.0, 6.0, &mat));
 }
 
 static void test_pyramid_hit_shrinks_t_max(void **state)
@@ -88,18 +81,8 @@ static void test_pyramid_miss_keeps_t_max(void **state)
 		{ 10, 2, 6.5, -1, 0, 0 }, { 5, 2, 10, 0, 0, -1 }, { 10, 2, 1, 1, 0, 0 },
 		{ 2, 2, -1, 1, 0, 0 }, { 10, 3.5, 3, -1, 0, 0 }, { 2, 2, 10, 0, 0, 1 },
 	};
-	size_t i;
 
-	for (i = 0; i < sizeof(rays) / sizeof(rays[0]); i++) {
-		struct ray r = support_ray(rays[i][0], rays[i][1], rays[i][2], rays[i][3],
-					   rays[i][4], rays[i][5]);
-		double t_max = 42.0;
-		if (shape_intersect(*state, &r, 0.0, &t_max)) {
-			print_error("ray %zu hit at t = %g\n", i, t_max);
-			fail();
-		}
-		assert_near(t_max, 42.0, 0.0);
-	}
+	support_assert_misses(*state, rays, sizeof(rays) / sizeof(rays[0]));
 }
 
 static void test_pyramid_apex_and_edges(void **state)
@@ -318,50 +301,43 @@ static void test_pyramid_parse_both_placements(void **state)
 }
 
 /* Each parse error: the code, the line and column of the offending token,
- * and the message. */
-static void assert_parse_fails(const struct shape_ops *ops, const char *text, int rc, int line,
-			       int col, const char *msg)
-{
-	struct shape *s = (struct shape *)&s;
-	struct diag d;
-
-	assert_int_equal(support_parse_object(ops, text, &s, &d), -rc);
-	assert_null(s);
-	assert_string_equal(d.file, "test.txt");
-	if (d.line != line || d.col != col || !strstr(d.msg, msg)) {
-		print_error("%s:%d:%d: %s\nexpected %d:%d: ...%s...\n", d.file, d.line, d.col, d.msg,
-			    line, col, msg);
-		fail();
-	}
-}
-
+ * and the message, read as the corner placement or (centred) the centred
+ * one. */
 static void test_pyramid_parse_errors(void **state)
 {
+	static const struct {
+		bool centred;
+		struct support_object_error e;
+	} cases[] = {
+		{ false, { "0 0 0\n0 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
+		           "pyramid base length must be > 0, found 0" } },
+		{ false, { "0 0 0\n10  -5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 5,
+		           "pyramid height must be > 0, found -5" } },
+		{ true, { "0 0 0\n-1 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
+		          "pyramid base width must be > 0, found -1" } },
+		{ true, { "0 0 0 10 0 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 10,
+		          "pyramid height must be > 0, found 0" } },
+		{ false, { "0 0 0 1e200 5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
+		           "pyramid base length is too large" } },
+		{ false, { "0 0 abc 10 5", RT_E_SYNTAX, 1, 5,
+		           "expected a number (pyramid corner), found 'abc'" } },
+		{ true, { "0 0\n\n  x", RT_E_SYNTAX, 3, 3,
+		          "expected a number (pyramid base centre), found 'x'" } },
+		{ false, { "0 0 0 10", RT_E_SYNTAX, 1, 9,
+		           "expected a number (pyramid height), found end of file" } },
+		/* The material is checked too: a colour out of [0, 1]. */
+		{ false, { "0 0 0 10 5\n1 2 0\n0.4 0.2 0.1 0.3 5", RT_E_RANGE, 2, 3,
+		           "colour component must be in [0, 1]" } },
+		{ false, { "0 0 0 nan 5", RT_E_RANGE, 1, 7,
+		           "expected a finite decimal number (pyramid base length)" } },
+	};
 	const struct shape_ops *corner_ops = shape_ops_find_in("pyramid", 7, PYRAMID_BIT);
 	const struct shape_ops *centred_ops = shape_ops_find_in("pyramid", 7, NEARFAR_BIT);
+	size_t i;
 
 	(void)state;
-	assert_parse_fails(corner_ops, "0 0 0\n0 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
-			   "pyramid base length must be > 0, found 0");
-	assert_parse_fails(corner_ops, "0 0 0\n10  -5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 5,
-			   "pyramid height must be > 0, found -5");
-	assert_parse_fails(centred_ops, "0 0 0\n-1 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
-			   "pyramid base width must be > 0, found -1");
-	assert_parse_fails(centred_ops, "0 0 0 10 0 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 10,
-			   "pyramid height must be > 0, found 0");
-	assert_parse_fails(corner_ops, "0 0 0 1e200 5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
-			   "pyramid base length is too large");
-	assert_parse_fails(corner_ops, "0 0 abc 10 5", RT_E_SYNTAX, 1, 5,
-			   "expected a number (pyramid corner), found 'abc'");
-	assert_parse_fails(centred_ops, "0 0\n\n  x", RT_E_SYNTAX, 3, 3,
-			   "expected a number (pyramid base centre), found 'x'");
-	assert_parse_fails(corner_ops, "0 0 0 10", RT_E_SYNTAX, 1, 9,
-			   "expected a number (pyramid height), found end of file");
-	/* The material is checked too: a colour out of [0, 1]. */
-	assert_parse_fails(corner_ops, "0 0 0 10 5\n1 2 0\n0.4 0.2 0.1 0.3 5", RT_E_RANGE, 2, 3,
-			   "colour component must be in [0, 1]");
-	assert_parse_fails(corner_ops, "0 0 0 nan 5", RT_E_RANGE, 1, 7,
-			   "expected a finite decimal number (pyramid base length)");
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++)
+		support_assert_object_error(cases[i].centred ? centred_ops : corner_ops, &cases[i].e);
 }
 
 /* True when (x, y) lies inside the triangle's projection on z (strictly,
@@ -508,7 +484,7 @@ static void test_pyramid_mesh(void **state)
 	shape_destroy(s);
 }
 
-SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_pyramid, teardown_pyramid,
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_pyramid, support_drop_shape,
 				   test_pyramid_hit_shrinks_t_max, test_pyramid_hit_each_face,
 				   test_pyramid_miss_keeps_t_max, test_pyramid_apex_and_edges,
 				   test_pyramid_from_inside, test_pyramid_t_min_and_behind,

@@ -16,14 +16,7 @@ static const struct material mat = { { 0.25, 0.5, 1.0 }, 0.4, 0.3, 0.2, 0.1, 7.0
 /* A radius-2 sphere at the origin. */
 static int setup_sphere(void **state)
 {
-	*state = sphere_create(vec3_make(0, 0, 0), 2.0, &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_sphere(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, sphere_create(vec3_make(0, 0, 0), 2.0, &mat));
 }
 
 static void test_sphere_hit_shrinks_t_max(void **state)
@@ -220,7 +213,7 @@ static void test_sphere_export_pov(void **state)
 	shape_destroy(s);
 }
 
-SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_sphere, teardown_sphere, test_sphere_hit_shrinks_t_max,
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_sphere, support_drop_shape, test_sphere_hit_shrinks_t_max,
 				   test_sphere_miss_keeps_t_max, test_sphere_tangent,
 				   test_sphere_from_inside, test_sphere_t_min_respected,
 				   test_sphere_non_unit_direction),

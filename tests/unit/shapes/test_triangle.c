@@ -17,14 +17,8 @@ static const struct material mat = { { 1.0, 0.0, 0.0 }, 0.4, 0.2, 0.1, 0.3, 5.0,
  * z = 2; (b - a) x (c - a) = (4,0,0) x (0,4,0) = (0,0,16). */
 static int setup_triangle(void **state)
 {
-	*state = triangle_create(vec3_make(0, 0, 2), vec3_make(4, 0, 2), vec3_make(0, 4, 2), &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_triangle(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, triangle_create(vec3_make(0, 0, 2), vec3_make(4, 0, 2),
+							 vec3_make(0, 4, 2), &mat));
 }
 
 static void test_triangle_hit_from_both_sides(void **state)
@@ -224,12 +218,12 @@ static void test_triangle_export_pov(void **state)
 	shape_destroy(line);
 }
 
-SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_triangle, teardown_triangle,
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_triangle, support_drop_shape,
 				   test_triangle_hit_from_both_sides,
 				   test_triangle_edges_inclusive,
 				   test_triangle_miss_behind_parallel, test_triangle_t_interval,
 				   test_triangle_starting_on_surface,
 				   test_triangle_non_unit_direction, test_triangle_unit_normal),
 	     SUPPORT_TESTS(test_triangle_bounds),
-	     SUPPORT_FIXTURE_TESTS(setup_triangle, teardown_triangle, test_triangle_degenerate),
+	     SUPPORT_FIXTURE_TESTS(setup_triangle, support_drop_shape, test_triangle_degenerate),
 	     SUPPORT_TESTS(test_triangle_parse, test_triangle_export_pov))
