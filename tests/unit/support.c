@@ -254,3 +254,13 @@ void support_assert_object_error(const struct shape_ops *ops, const struct suppo
 		fail();
 	}
 }
+
+void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
+				 double kr, double shininess, const char *file, int line)
+{
+	support_assert_near(m->ka, ka, 0.0, "ka", file, line);
+	support_assert_near(m->kd, kd, 0.0, "kd", file, line);
+	support_assert_near(m->ks, ks, 0.0, "ks", file, line);
+	support_assert_near(m->kr, kr, 0.0, "kr", file, line);
+	support_assert_near(m->shininess, shininess, 0.0, "shininess", file, line);
+}

@@ -41,6 +41,11 @@ char *support_export_pov(const struct shape *s, enum pov_finish finish);
 int support_hold_shape(void **state, struct shape *s);
 int support_drop_shape(void **state);
 
+/* The material's coefficients and shininess, each exactly as given. */
+#define assert_coefficients(m, ka, kd, ks, kr, shininess) \
+	support_assert_coefficients((m), (ka), (kd), (ks), (kr), (shininess), __FILE__, __LINE__)
+void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
+				 double kr, double shininess, const char *file, int line);
 /* A ray that must hit shape s past t_min: *t_max is set to infinity, and
  * after the call holds the nearest hit, which must be t within eps. */
 #define assert_hit(s, r, t_min, t_max, t, eps) \

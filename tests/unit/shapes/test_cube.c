@@ -74,8 +74,7 @@ static void test_cube_slanted_hit(void **state)
 	struct ray r = support_ray(-20, -80, 90, -40, 0, -60);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 1.0, 1e-15);
+	assert_hit(*state, &r, 0.0, &t_max, 1.0, 1e-15);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)), vec3_make(1, 0, 0), 0.0);
 }
 
@@ -105,14 +104,9 @@ static void test_cube_edges_and_corners(void **state)
 	struct ray out = support_ray(-50 + eps, -70, 30, -1, 1, 0);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &along, 0.0, &t_max));
-	assert_near(t_max, 100.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &corner, 0.0, &t_max));
-	assert_near(t_max, 1.0, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-8);
+	assert_hit(*state, &along, 0.0, &t_max, 100.0, 0.0);
+	assert_hit(*state, &corner, 0.0, &t_max, 1.0, 1e-12);
+	assert_hit(*state, &in, 0.0, &t_max, 10.0, 1e-8);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 }
@@ -124,13 +118,10 @@ static void test_cube_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* Out through y = -60: t = 20, normal +y. */
-	assert_true(shape_intersect(*state, &r, 1e-9, &t_max));
-	assert_near(t_max, 20.0, 0.0);
+	assert_hit(*state, &r, 1e-9, &t_max, 20.0, 0.0);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)), vec3_make(0, 1, 0), 0.0);
 	/* |d| = 1/4 down to z = 10: 20 / (1/4) = 80. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slow, 1e-9, &t_max));
-	assert_near(t_max, 80.0, 0.0);
+	assert_hit(*state, &slow, 1e-9, &t_max, 80.0, 0.0);
 	assert_vec3_near(shape_normal(*state, ray_at(&slow, t_max)), vec3_make(0, 0, -1), 0.0);
 }
 
@@ -140,11 +131,8 @@ static void test_cube_t_min_and_non_unit(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 2: in at x = -100 (t = 50), out at x = -60 (t = 70). */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 50.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &r, 50.0, &t_max));
-	assert_near(t_max, 70.0, 0.0);
+	assert_hit(*state, &r, 0.0, &t_max, 50.0, 0.0);
+	assert_hit(*state, &r, 50.0, &t_max, 70.0, 0.0);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 70.0, &t_max));
 	assert_true(isinf(t_max));
@@ -203,11 +191,7 @@ static void test_cube_parse(void **state)
 	assert_near(s->mat.color.r, 0.0, 0.0);
 	assert_near(s->mat.color.g, 0.5, 0.0);
 	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.15, 0.0);
-	assert_near(s->mat.kd, 0.1, 0.0);
-	assert_near(s->mat.ks, 0.4, 0.0);
-	assert_near(s->mat.kr, 0.45, 0.0);
-	assert_near(s->mat.shininess, 10.0, 0.0);
+	assert_coefficients(&s->mat, 0.15, 0.1, 0.4, 0.45, 10.0);
 	shape_destroy(s);
 }
 

@@ -35,15 +35,10 @@ static void test_floor_hit_from_above_and_below(void **state)
 	struct ray slant = support_ray(0, 0, 10, 3, 4, -5);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &down, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
+	assert_hit(*state, &down, 0.0, &t_max, 10.0, 0.0);
+	assert_hit(*state, &up, 0.0, &t_max, 10.0, 0.0);
 	/* Non-unit direction (|d| = sqrt(50)): z = 10 - 5t = 0 at t = 2. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slant, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
+	assert_hit(*state, &slant, 0.0, &t_max, 2.0, 0.0);
 }
 
 static void test_floor_miss_parallel_behind(void **state)
@@ -172,11 +167,7 @@ static void test_floor_material_and_bounds(void **state)
 	struct aabb box;
 
 	/* Coefficients 0.4 0.2 0.2 0.2, shininess 1. */
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.2, 0.0);
-	assert_near(s->mat.ks, 0.2, 0.0);
-	assert_near(s->mat.kr, 0.2, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.2, 0.2, 0.2, 1.0);
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-500, -500, 0), 0.0);
 	assert_vec3_near(box.max, vec3_make(500, 500, 0), 0.0);
@@ -248,11 +239,7 @@ static void test_floor_view_finite_keeps_rule(void **state)
 	assert_non_null(s);
 	assert_non_null(classic);
 	assert_ptr_equal(s->ops, classic->ops);
-	assert_near(s->mat.ka, 0.1, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.6, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.1, 0.3, 0.0, 0.6, 1.0);
 	assert_near(s->mat.color.r, 1.0, 0.0);
 	/* (0, 0): (500 / 30 -> 16) + 16, white; x = 10: 510 / 30 = 17 exactly:
 	 * black; the parities agree with the classic floor of those tiles. */
@@ -351,14 +338,9 @@ static void test_floor_infinite_everywhere(void **state)
 	assert_non_null(s);
 	/* Far beyond any finite floor's square, from above and below; a
 	 * non-unit direction. */
-	assert_true(shape_intersect(s, &far, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &slant, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &up, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
+	assert_hit(s, &far, 0.0, &t_max, 10.0, 0.0);
+	assert_hit(s, &slant, 0.0, &t_max, 2.0, 0.0);
+	assert_hit(s, &up, 0.0, &t_max, 2.0, 0.0);
 	/* The open interval shrinks and is kept. */
 	t_max = 2.0;
 	assert_false(shape_intersect(s, &up, 0.0, &t_max));
@@ -377,11 +359,7 @@ static void test_floor_infinite_everywhere(void **state)
 	assert_true(shape_is_textured(s));
 	assert_null(shape_degenerate(s));
 	/* The material: the given coefficients, a white tile colour. */
-	assert_near(s->mat.ka, 0.1, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.6, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.1, 0.3, 0.0, 0.6, 1.0);
 	assert_near(s->mat.color.g, 1.0, 0.0);
 	shape_destroy(s);
 }

@@ -92,15 +92,12 @@ static void test_pyramid_apex_and_edges(void **state)
 	double eps = 1e-9;
 
 	/* Straight down onto the apex: a corner hits, at t = 4. */
-	assert_true(shape_intersect(*state, &apex, 0.0, &t_max));
-	assert_near(t_max, 4.0, 0.0);
+	assert_hit(*state, &apex, 0.0, &t_max, 4.0, 0.0);
 	/* Just inside and just outside the base's edge x = 4, from below. */
 	{
 		struct ray in = support_ray(4 - eps, 2, -5, 0, 0, 1);
 		struct ray out = support_ray(4 + eps, 2, -5, 0, 0, 1);
-		t_max = INFINITY;
-		assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-		assert_near(t_max, 5.0, 0.0);
+		assert_hit(*state, &in, 0.0, &t_max, 5.0, 0.0);
 		t_max = INFINITY;
 		assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 	}
@@ -110,9 +107,7 @@ static void test_pyramid_apex_and_edges(void **state)
 	{
 		struct ray in = support_ray(-2 - eps, -4, 3, 1, 1, 0);
 		struct ray out = support_ray(-2 + eps, -4, 3, 1, 1, 0);
-		t_max = INFINITY;
-		assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-		assert_near(t_max, 5.0, 1e-8);
+		assert_hit(*state, &in, 0.0, &t_max, 5.0, 1e-8);
 		t_max = INFINITY;
 		assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 	}
@@ -126,18 +121,13 @@ static void test_pyramid_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* Out through the +x side at x = 11/3: t = 7/6, normal (3, 0, 1)/√10. */
-	assert_true(shape_intersect(*state, &r, 1e-9, &t_max));
-	assert_near(t_max, 7.0 / 6.0, 1e-12);
+	assert_hit(*state, &r, 1e-9, &t_max, 7.0 / 6.0, 1e-12);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)),
 			 vec3_normalize(vec3_make(3, 0, 1)), 1e-15);
 	/* Up from (1, 1, 0.5): the -x and -y sides meet x = 1 at z = 3 (t =
 	 * 2.5); down: the base at t = 0.5. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 1e-9, &t_max));
-	assert_near(t_max, 2.5, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &down, 1e-9, &t_max));
-	assert_near(t_max, 0.5, 1e-12);
+	assert_hit(*state, &up, 1e-9, &t_max, 2.5, 1e-12);
+	assert_hit(*state, &down, 1e-9, &t_max, 0.5, 1e-12);
 	assert_vec3_near(shape_normal(*state, ray_at(&down, t_max)), vec3_make(0, 0, -1), 0.0);
 }
 
@@ -149,8 +139,7 @@ static void test_pyramid_t_min_and_behind(void **state)
 
 	/* In at x = 11/3 (t = 19/3), out at x = 1/3 (t = 29/3): with t_min
 	 * past the entry, the exit. */
-	assert_true(shape_intersect(*state, &r, 7.0, &t_max));
-	assert_near(t_max, 29.0 / 3.0, 1e-12);
+	assert_hit(*state, &r, 7.0, &t_max, 29.0 / 3.0, 1e-12);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 10.0, &t_max));
 	assert_true(isinf(t_max));
@@ -165,12 +154,9 @@ static void test_pyramid_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 0.5: twice the distance, 2 (10 - 11/3). */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 2.0 * (10 - 11.0 / 3), 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 2.0 * (10 - 11.0 / 3), 1e-12);
 	/* |d| = 3 from inside: (11/3 - 2.5) / 3. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &in, 1e-9, &t_max));
-	assert_near(t_max, 7.0 / 18.0, 1e-12);
+	assert_hit(*state, &in, 1e-9, &t_max, 7.0 / 18.0, 1e-12);
 }
 
 static void test_pyramid_unit_normals(void **state)
@@ -227,11 +213,8 @@ static void test_pyramid_bounds_both_placements(void **state)
 	assert_vec3_near(box.min, vec3_make(-55, -15, 5), 0.0);
 	assert_vec3_near(box.max, vec3_make(-25, 15, 45), 0.0);
 	/* The apexes: (15, 15, 60.1) and (-40, 0, 45). */
-	assert_true(shape_intersect(corner, &down, 0.0, &t_max));
-	assert_near(t_max, 100 - 60.1, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(centred, &apex, 0.0, &t_max));
-	assert_near(t_max, 55.0, 1e-12);
+	assert_hit(corner, &down, 0.0, &t_max, 100 - 60.1, 1e-12);
+	assert_hit(centred, &apex, 0.0, &t_max, 55.0, 1e-12);
 	/* The tables: the dialect each placement is read in, one keyword. */
 	assert_ptr_equal(corner->ops, shape_ops_find_in("pyramid", 7, PYRAMID_BIT));
 	assert_ptr_equal(centred->ops, shape_ops_find_in("pyramid", 7, NEARFAR_BIT));
@@ -286,11 +269,7 @@ static void test_pyramid_parse_both_placements(void **state)
 	assert_vec3_near(box.min, vec3_make(-40, 0, 5), 0.0);
 	assert_vec3_near(box.max, vec3_make(-10, 30, 45), 0.0);
 	assert_near(s->mat.color.r, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.2, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.4, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.2, 0.0, 0.4, 1.0);
 	shape_destroy(s);
 	assert_int_equal(support_parse_object(centred_ops, text, &s, &d), 0);
 	assert_ptr_equal(s->ops, centred_ops);

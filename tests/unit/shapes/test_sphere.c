@@ -51,8 +51,7 @@ static void test_sphere_tangent(void **state)
 	double t_max = INFINITY;
 
 	/* y = 2 touches the sphere at (0, 2, 0), t = 10. */
-	assert_true(shape_intersect(*state, &graze, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-9);
+	assert_hit(*state, &graze, 0.0, &t_max, 10.0, 1e-9);
 }
 
 static void test_sphere_from_inside(void **state)
@@ -61,8 +60,7 @@ static void test_sphere_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* From (0, 0, 1): roots -3 and 1; the exit at z = 2. */
-	assert_true(shape_intersect(*state, &r, 1e-6, &t_max));
-	assert_near(t_max, 1.0, 1e-12);
+	assert_hit(*state, &r, 1e-6, &t_max, 1.0, 1e-12);
 }
 
 static void test_sphere_t_min_respected(void **state)
@@ -70,8 +68,7 @@ static void test_sphere_t_min_respected(void **state)
 	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &r, 9.0, &t_max));
-	assert_near(t_max, 12.0, 1e-12);
+	assert_hit(*state, &r, 9.0, &t_max, 12.0, 1e-12);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 12.5, &t_max));
 	assert_true(isinf(t_max));
@@ -83,8 +80,7 @@ static void test_sphere_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 0.5: t = 8 / 0.5 = 16. */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 16.0, 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 16.0, 1e-12);
 }
 
 static void test_sphere_unit_normals(void **state)
@@ -118,8 +114,7 @@ static void test_sphere_hit_off_centre(void **state)
 	(void)state;
 	/* 1.5 off the axis of a radius-2.5 sphere: the chord's half-length
 	 * is sqrt(6.25 - 2.25) = 2, so z = 3 - 2 = 1 and t = 8. */
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 8.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 8.0, 1e-12);
 	/* The normal there is (0, 1.5, -2) / 2.5. */
 	n = shape_normal(s, ray_at(&r, t_max));
 	assert_vec3_near(n, vec3_make(0, 0.6, -0.8), 1e-12);
@@ -157,16 +152,11 @@ static void test_sphere_parse(void **state)
 	assert_vec3_near(box.min, vec3_make(-3, -6, -0.5), 0.0);
 	assert_vec3_near(box.max, vec3_make(5, 2, 7.5), 0.0);
 	/* z = 3.5 - 4 = -0.5, t = 9.5. */
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 9.5, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 9.5, 1e-12);
 	assert_near(s->mat.color.r, 0.25, 0.0);
 	assert_near(s->mat.color.g, 0.5, 0.0);
 	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.2, 0.0);
-	assert_near(s->mat.kr, 0.1, 0.0);
-	assert_near(s->mat.shininess, 7.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.3, 0.2, 0.1, 7.0);
 	scene_destroy(sc);
 }
 

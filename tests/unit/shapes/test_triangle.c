@@ -28,11 +28,8 @@ static void test_triangle_hit_from_both_sides(void **state)
 	double t_max = INFINITY;
 
 	/* From z = 10 down to z = 2: t = 8; from z = -10 up: t = 12. */
-	assert_true(shape_intersect(*state, &down, 0.0, &t_max));
-	assert_near(t_max, 8.0, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 0.0, &t_max));
-	assert_near(t_max, 12.0, 1e-12);
+	assert_hit(*state, &down, 0.0, &t_max, 8.0, 1e-12);
+	assert_hit(*state, &up, 0.0, &t_max, 12.0, 1e-12);
 }
 
 static void test_triangle_edges_inclusive(void **state)
@@ -113,12 +110,9 @@ static void test_triangle_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 4: t = 8 / 4 = 2. */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 2.0, 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 2.0, 1e-12);
 	/* From (-3, 1, 6) along (1, 0, -1): z = 2 at t = 4, point (1, 1, 2). */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slant, 0.0, &t_max));
-	assert_near(t_max, 4.0, 1e-12);
+	assert_hit(*state, &slant, 0.0, &t_max, 4.0, 1e-12);
 }
 
 static void test_triangle_unit_normal(void **state)
