@@ -120,17 +120,9 @@ static void test_cylinder_export_pov(void **state)
 	free(text);
 }
 
-static int load_cylinder(void **state)
-{
-	(void)state;
-	return fixture_load("cylinder");
-}
-
-SUPPORT_MAIN_AROUND(load_cylinder, fixture_unload,
-		    SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy,
-					  test_cylinder_side_and_caps, test_cylinder_tangent,
-					  test_cylinder_non_unit_and_t_max,
-					  test_cylinder_normals),
-		    SUPPORT_TESTS(test_cylinder_slanted_bounds, test_cylinder_parse_errors),
-		    SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy,
-					  test_cylinder_export_pov))
+FIXTURE_MAIN("cylinder",
+	     SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy, test_cylinder_side_and_caps,
+				   test_cylinder_tangent, test_cylinder_non_unit_and_t_max,
+				   test_cylinder_normals),
+	     SUPPORT_TESTS(test_cylinder_slanted_bounds, test_cylinder_parse_errors),
+	     SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy, test_cylinder_export_pov))

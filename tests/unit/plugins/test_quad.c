@@ -111,16 +111,10 @@ static void test_quad_export_pov(void **state)
 	free(text);
 }
 
-static int load_quad(void **state)
-{
-	(void)state;
-	return fixture_load("quad");
-}
-
-SUPPORT_MAIN_AROUND(load_quad, fixture_unload,
-		    SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy,
-					  test_quad_hits_both_triangles_from_both_sides,
-					  test_quad_non_unit_direction_and_t_max,
-					  test_quad_normal_and_bounds),
-		    SUPPORT_TESTS(test_quad_degenerate_and_non_planar, test_quad_parse_errors),
-		    SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy, test_quad_export_pov))
+FIXTURE_MAIN("quad",
+	     SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy,
+				   test_quad_hits_both_triangles_from_both_sides,
+				   test_quad_non_unit_direction_and_t_max,
+				   test_quad_normal_and_bounds),
+	     SUPPORT_TESTS(test_quad_degenerate_and_non_planar, test_quad_parse_errors),
+	     SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy, test_quad_export_pov))
