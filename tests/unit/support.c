@@ -264,3 +264,10 @@ void support_assert_coefficients(const struct material *m, double ka, double kd,
 	support_assert_near(m->kr, kr, 0.0, "kr", file, line);
 	support_assert_near(m->shininess, shininess, 0.0, "shininess", file, line);
 }
+
+void support_settings(struct settings *s, int size, int recursion)
+{
+	settings_init(s);
+	s->size = size;
+	s->recursion = recursion;
+}

@@ -18,6 +18,7 @@
 #include "whitted/pov.h"
 #include "whitted/ray.h"
 #include "whitted/scene.h"
+#include "whitted/settings.h"
 #include "whitted/vec3.h"
 
 /* assert_float_equal converts to float; these keep doubles. */
@@ -64,6 +65,9 @@ struct support_object_error {
 	const char *msg;
 };
 void support_assert_object_error(const struct shape_ops *ops, const struct support_object_error *e);
+
+/* The default settings (settings_init) at this size and recursion. */
+void support_settings(struct settings *s, int size, int recursion);
 
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */

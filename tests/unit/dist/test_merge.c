@@ -48,9 +48,7 @@ static void write_tiles(struct tiles *t)
 
 	assert_non_null(mkdtemp(dir));
 	memcpy(t->dir, dir, sizeof(dir));
-	settings_init(&st);
-	st.size = FULL_W;
-	st.recursion = 1;
+	support_settings(&st, FULL_W, 1);
 	for (j = 0; j < ROWS; j++) {
 		for (i = 0; i < COLS; i++) {
 			int k = j * COLS + i;

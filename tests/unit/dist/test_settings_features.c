@@ -16,9 +16,7 @@ static const char classic_text[] =
 
 static void base(struct settings *s)
 {
-	settings_init(s);
-	s->size = 64;
-	s->recursion = 3;
+	support_settings(s, 64, 3);
 }
 
 static void test_settings_features_defaults_leave_the_text(void **state)

@@ -89,9 +89,7 @@ static void make_tile(struct tile_info *info, struct image *img, int x0, int y0,
 	struct diag d;
 	int i;
 
-	settings_init(&s);
-	s.size = 16;
-	s.recursion = 3;
+	support_settings(&s, 16, 3);
 	tile_info_init(info, &s, UINT64_C(0x0123456789abcdef), x0, y0, x1, y1);
 	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
 	for (i = 0; i < img->width * img->height * 3; i++)

@@ -11,6 +11,7 @@
 #include "course_scene.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
+#include "render_fixture.h"
 #include "support.h"
 
 static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
@@ -677,15 +678,9 @@ static void render_region(const struct scene *s, const struct camera *cam, int t
 			  struct ray_counts *counts)
 {
 	struct render_job job;
-	struct diag d;
 
 	render_job_init(&job, s, cam, threads);
-	job.x0 = x0;
-	job.y0 = y0;
-	job.x1 = x1;
-	job.y1 = y1;
-	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
-	assert_int_equal(render_image(&job, img, counts, &d), 0);
+	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 }
 
 /* At 99 pixels the last blocks of 16 are cut to 3 pixels on both axes. */
@@ -713,9 +708,7 @@ static void test_render_threads_bit_identical(void **state)
 	for (i = 0; i < sizeof(threads) / sizeof(threads[0]); i++) {
 		render_region(s, &cam, threads[i], 0, 0, 99, 99, &other, &n);
 		assert_memory_equal(one.pixels, other.pixels, 99 * 99 * 3);
-		assert_int_equal(n.primary, n1.primary);
-		assert_int_equal(n.shadow, n1.shadow);
-		assert_int_equal(n.reflection, n1.reflection);
+		assert_same_ray_counts(n, n1);
 		image_free(&other);
 	}
 	image_free(&one);
