@@ -56,20 +56,26 @@ static void test_settings_canonical_dialect(void **state)
 	assert_null(strstr(options, "dialect"));
 }
 
-/* Numbers that need 16 and 17 digits, an exponent and a negative zero. */
+/* Numbers that need 16 and 17 digits, an exponent and a negative zero
+ * (and the other clamp). */
+static void set_hard_numbers(struct settings *s)
+{
+	s->camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
+	s->camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
+	s->camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
+	s->camera.fov_deg = 80.00000000000001;
+	s->floor_width = 600.5;
+	s->floor_tile = 0.1;
+	s->clamp = RT_CLAMP_FINAL;
+}
+
 static void test_settings_canonical_digits(void **state)
 {
 	struct settings s;
 
 	(void)state;
 	support_settings(&s, 33, 2);
-	s.camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
-	s.camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
-	s.camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
-	s.camera.fov_deg = 80.00000000000001;
-	s.floor_width = 600.5;
-	s.floor_tile = 0.1;
-	s.clamp = RT_CLAMP_FINAL;
+	set_hard_numbers(&s);
 	assert_canonical(&s, "size=33 recursion=2 eye=0.1,-199.99999999999997,1e-300 "
 			     "look=0.3333333333333333,2e+17,-7.25 "
 			     "up=-0,0.30000000000000004,0.9539392014169455 fov=80.00000000000001 "
@@ -156,13 +162,7 @@ static void test_settings_options_round_trip(void **state)
 	(void)state;
 	support_settings(&s, 768, 4);
 	assert_options_round_trip(&s);
-	s.camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
-	s.camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
-	s.camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
-	s.camera.fov_deg = 80.00000000000001;
-	s.floor_width = 600.5;
-	s.floor_tile = 0.1;
-	s.clamp = RT_CLAMP_FINAL;
+	set_hard_numbers(&s);
 	assert_options_round_trip(&s);
 	s.floor = false;
 	assert_options_round_trip(&s);

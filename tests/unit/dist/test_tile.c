@@ -203,24 +203,32 @@ static void test_tile_png_round_trip(void **state)
 	image_free(&img);
 }
 
+/* The bytes of the tile 3 2 10 7 (make_tile) written to path; *info its
+ * record.  The caller frees them. */
+static unsigned char *written_tile(struct tile_info *info, const char *path, size_t *n)
+{
+	struct image img;
+	struct diag d;
+
+	make_tile(info, &img, 3, 2, 10, 7);
+	assert_int_equal(tile_write(path, &img, info, NULL, &d), 0);
+	image_free(&img);
+	return slurp(path, n);
+}
+
 /* The chunks in the file: oFFs, vpAg and tEXt, all before the image data. */
 static void test_tile_png_chunks(void **state)
 {
 	static const unsigned char offs[9] = { 0, 0, 0, 3, 0, 0, 0, 2, 0 };
 	static const unsigned char vpag[9] = { 0, 0, 0, 16, 0, 0, 0, 16, 0 };
 	struct tile_info info;
-	struct image img;
 	const char *path = tmp_path("chunks.png");
 	char text[RT_TILE_TEXT_MAX];
 	size_t n, o, v, t, idat;
 	unsigned char *b;
-	struct diag d;
 
 	(void)state;
-	make_tile(&info, &img, 3, 2, 10, 7);
-	assert_int_equal(tile_write(path, &img, &info, NULL, &d), 0);
-	image_free(&img);
-	b = slurp(path, &n);
+	b = written_tile(&info, path, &n);
 	o = find_chunk(b, n, "oFFs");
 	v = find_chunk(b, n, "vpAg");
 	t = find_chunk(b, n, "tEXt");
@@ -275,10 +283,7 @@ static void test_tile_png_damaged(void **state)
 	struct diag d;
 
 	(void)state;
-	make_tile(&info, &img, 3, 2, 10, 7);
-	assert_int_equal(tile_write(path, &img, &info, NULL, &d), 0);
-	image_free(&img);
-	b = slurp(path, &n);
+	b = written_tile(&info, path, &n);
 	assert_damage_refused(b, n, "tEXt");
 	assert_damage_refused(b, n, "oFFs");
 	assert_damage_refused(b, n, "vpAg");
