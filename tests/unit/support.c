@@ -271,3 +271,45 @@ void support_settings(struct settings *s, int size, int recursion)
 	s->size = size;
 	s->recursion = recursion;
 }
+
+unsigned char *support_read_file(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	unsigned char *buf;
+	long n;
+
+	assert_non_null(f);
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	n = ftell(f);
+	assert_true(n >= 0);
+	rewind(f);
+	/* One byte more, so that an empty file has a buffer too. */
+	buf = malloc((size_t)n + 1);
+	assert_non_null(buf);
+	assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
+	fclose(f);
+	*len = (size_t)n;
+	return buf;
+}
+
+size_t support_keyword_list(char *out, size_t size)
+{
+	const struct shape_ops *const *all = shape_ops_all();
+	size_t i, j, used = 0;
+
+	out[0] = '\0';
+	for (i = 0; all[i]; i++) {
+		bool seen = false;
+
+		for (j = 0; j < i; j++)
+			seen = seen || strcmp(all[j]->keyword, all[i]->keyword) == 0;
+		if (seen)
+			continue;
+		used += strlen(all[i]->keyword) + (out[0] ? 2 : 0);
+		assert_true(used < size);
+		if (out[0])
+			strcat(out, ", ");
+		strcat(out, all[i]->keyword);
+	}
+	return i;
+}

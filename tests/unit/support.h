@@ -69,6 +69,15 @@ void support_assert_object_error(const struct shape_ops *ops, const struct suppo
 /* The default settings (settings_init) at this size and recursion. */
 void support_settings(struct settings *s, int size, int recursion);
 
+/* The whole of the file at path (the test fails where it cannot be read),
+ * *len its size; the caller frees it. */
+unsigned char *support_read_file(const char *path, size_t *len);
+
+/* The registry's keywords in its order, each once (a keyword of two
+ * tables, as the pyramid's, once), joined by ", " into out (size bytes,
+ * which must hold them); returns the number of tables. */
+size_t support_keyword_list(char *out, size_t size);
+
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */
 struct scene *support_parse(const char *text);

@@ -43,18 +43,6 @@ static const char *tmp_path(const char *name)
 	return path;
 }
 
-static unsigned char *slurp(const char *path, size_t *n)
-{
-	FILE *f = fopen(path, "rb");
-	unsigned char *b = malloc(1 << 20);
-
-	assert_non_null(f);
-	assert_non_null(b);
-	*n = fread(b, 1, 1 << 20, f);
-	fclose(f);
-	return b;
-}
-
 static void spill(const char *path, const void *b, size_t n)
 {
 	FILE *f = fopen(path, "wb");
@@ -213,7 +201,7 @@ static unsigned char *written_tile(struct tile_info *info, const char *path, siz
 	make_tile(info, &img, 3, 2, 10, 7);
 	assert_int_equal(tile_write(path, &img, info, NULL, &d), 0);
 	image_free(&img);
-	return slurp(path, n);
+	return support_read_file(path, n);
 }
 
 /* The chunks in the file: oFFs, vpAg and tEXt, all before the image data. */
@@ -345,8 +333,8 @@ static void test_tile_png_same_image_data(void **state)
 	assert_int_equal(tile_write(tile, &img, &info, NULL, &d), 0);
 	assert_int_equal(image_write(&img, plain, RT_FORMAT_PNG, NULL, &d), 0);
 	image_free(&img);
-	a = slurp(tile, &na);
-	b = slurp(plain, &nb);
+	a = support_read_file(tile, &na);
+	b = support_read_file(plain, &nb);
 	ia = find_chunk(a, na, "IDAT");
 	ib = find_chunk(b, nb, "IDAT");
 	assert_true(ia && ib);
