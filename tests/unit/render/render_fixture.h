@@ -1,8 +1,10 @@
-/* What the render tests share: rendering one region of a job, and the
- * check that two renders cast the same rays.  Header only. */
+/* What the render tests share: rendering one region of a job, the check
+ * that two renders cast the same rays, and the kernels of the set an ISA
+ * test runs for.  Header only. */
 #ifndef RT_TESTS_RENDER_FIXTURE_H
 #define RT_TESTS_RENDER_FIXTURE_H
 
+#include "render/render_kernels.h"
 #include "whitted/image.h"
 #include "whitted/render.h"
 #include "support.h"
@@ -30,5 +32,17 @@ static inline void render_fixture_region(struct render_job *job, int x0, int y0,
 		assert_int_equal((n).shadow, (n1).shadow); \
 		assert_int_equal((n).reflection, (n1).reflection); \
 	} while (0)
+
+/* The render kernels of the set of instructions this test runs for
+ * (SUPPORT_ISA_TESTS); the test is skipped where the processor lacks the
+ * set and fails where the build does (support_need_isa). */
+static inline const struct render_kernels *render_fixture_kernels(void **state)
+{
+	enum rt_simd isa = SUPPORT_ISA_OF(state);
+	const struct render_kernels *k = render_kernels_of(isa);
+
+	support_need_isa(isa, k != NULL);
+	return k;
+}
 
 #endif

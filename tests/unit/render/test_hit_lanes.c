@@ -21,6 +21,7 @@
 #include "render/hit_lanes.h"
 #include "render/shade_math.h"
 #include "shapes/shapes.h"
+#include "render_fixture.h"
 #include "support.h"
 #include "whitted/image.h"
 
@@ -187,12 +188,11 @@ static void check_rays(const struct hit_lanes_set *set, const char *name)
  * lacks it. */
 static void test_hit_lanes_sets(void **state)
 {
-	enum rt_simd isa = SUPPORT_ISA_OF(state);
-	const struct render_kernels *k = render_kernels_of(isa);
+	const struct render_kernels *k = render_fixture_kernels(state);
+	const char *tag = support_isa_tag(SUPPORT_ISA_OF(state));
 
-	support_need_isa(isa, k != NULL);
-	check_set(&k->hit, support_isa_tag(isa));
-	check_rays(&k->hit, support_isa_tag(isa));
+	check_set(&k->hit, tag);
+	check_rays(&k->hit, tag);
 }
 
 #define N_SHAPES 7
