@@ -117,7 +117,13 @@ static void test_png_idat_heights(void **state)
 	}
 }
 
-static void test_png_idat_out_of_memory(void **state)
+typedef int compress_fn(const struct image *img, struct png_idat *z, struct diag *d);
+
+/* compress made to fail at its first allocation, then its second, and so
+ * on until it succeeds: every failure reported as out of memory (without
+ * a leak: the sanitizer build finds those), and the stream it then makes
+ * the image's (20 x 150, fill_pixels with seed). */
+static void check_out_of_memory(compress_fn *compress, unsigned seed)
 {
 	struct image img;
 	struct png_idat z;
@@ -125,13 +131,12 @@ static void test_png_idat_out_of_memory(void **state)
 	unsigned long n;
 	int rc;
 
-	(void)state;
 	memset(&d, 0, sizeof(d));
 	assert_int_equal(image_alloc(&img, 20, 150, &d), 0);
-	fill_pixels(&img, 7);
+	fill_pixels(&img, seed);
 	for (n = 1;; n++) {
 		rt_alloc_fail_from(n);
-		rc = png_idat_compress(&img, &z, &d);
+		rc = compress(&img, &z, &d);
 		rt_alloc_fail_from(0);
 		if (rc == 0)
 			break;
@@ -141,6 +146,12 @@ static void test_png_idat_out_of_memory(void **state)
 	check_stream(&img, &z);
 	png_idat_free(&z);
 	image_free(&img);
+}
+
+static void test_png_idat_out_of_memory(void **state)
+{
+	(void)state;
+	check_out_of_memory(png_idat_compress, 7);
 }
 
 /* The bands of the image told in the order `order` (a permutation of
@@ -328,43 +339,30 @@ static void test_png_writer_same_file(void **state)
 	image_free(&img);
 }
 
+/* The image in two bands (told 1 then 0) through the strips. */
+static int compress_in_bands(const struct image *img, struct png_idat *z, struct diag *d)
+{
+	struct png_idat_strips *st = NULL;
+	int rc = png_idat_strips_open(img, 2, &st, d);
+
+	if (rc != 0) {
+		assert_null(st);
+		return rc;
+	}
+	png_idat_strips_band_done(st, 1, 1);
+	png_idat_strips_band_done(st, 0, 0);
+	rc = png_idat_strips_finish(st, z, d);
+	png_idat_strips_free(st);
+	return rc;
+}
+
 /* Every allocation that fails, in the opening, in the strips compressed
  * band by band or in the finish, is reported as out of memory without a
  * leak (the sanitizer build finds those). */
 static void test_png_idat_bands_out_of_memory(void **state)
 {
-	struct image img;
-	struct png_idat z;
-	struct diag d;
-	unsigned long n;
-	int rc;
-
 	(void)state;
-	memset(&d, 0, sizeof(d));
-	assert_int_equal(image_alloc(&img, 20, 150, &d), 0);
-	fill_pixels(&img, 5);
-	for (n = 1;; n++) {
-		struct png_idat_strips *st = NULL;
-
-		rt_alloc_fail_from(n);
-		rc = png_idat_strips_open(&img, 2, &st, &d);
-		if (rc == 0) {
-			png_idat_strips_band_done(st, 1, 1);
-			png_idat_strips_band_done(st, 0, 0);
-			rc = png_idat_strips_finish(st, &z, &d);
-			png_idat_strips_free(st);
-		} else {
-			assert_null(st);
-		}
-		rt_alloc_fail_from(0);
-		if (rc == 0)
-			break;
-		assert_int_equal(rc, -RT_E_NOMEM);
-	}
-	assert_true(n > 1);
-	check_stream(&img, &z);
-	png_idat_free(&z);
-	image_free(&img);
+	check_out_of_memory(compress_in_bands, 5);
 }
 
 SUPPORT_MAIN(SUPPORT_TESTS(test_png_idat_heights, test_png_idat_out_of_memory,
