@@ -1,6 +1,7 @@
 # shellcheck shell=sh disable=SC2154
 # Sourced by tests/povcheck.sh: the cross-validations of issue 14's
-# features, with its functions and variables (size, out, build, pass, fail).
+# features, with its functions (case_run, gate, missing) and variables
+# (size, out, build, pass, fail).
 
 # samples_case NAME SCENE N [OPTIONS...]: whitted at size S with --samples N
 # against POV-Ray at N*S (no antialiasing) reduced by N x N box averaging.
@@ -17,17 +18,7 @@ samples_case() {
 		missing "$name" "whitted, scene2pov, povray or imgfilter failed (see $log)"
 		return 0
 	fi
-	if result=$("$build/imgcmp" --diff "$out/$name-diff.png" "$w" "$out/$name-box.png" 2>>"$log"); then
-		status="ok (POV-Ray at $((size * n)), box-reduced)"
-		pass=$((pass + 1))
-	else
-		status="FAIL (difference x32: $out/$name-diff.png)"
-		fail=$((fail + 1))
-		failed="$failed $name"
-	fi
-	# shellcheck disable=SC2046
-	set -- $(printf '%s\n' "$result" | sed 's/[a-z0-9]*=//g')
-	printf '%-34s %8s %5s %9s %9s  %s\n' "$name" "${1:-?}" "${3:-?}" "${4:-?}" "${5:-?}" "$status"
+	gate "$name" "$out/$name-box.png" "ok (POV-Ray at $((size * n)), box-reduced)"
 }
 
 s="$root/scenes"

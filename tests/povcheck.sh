@@ -40,33 +40,54 @@ pass=0 fail=0 failed=""
 # settings) out of the comparison.
 mkdir -p "$out/home"
 
-# case NAME SCENE [OPTIONS...]: one row of the table.
-case_run() {
+# render_both NAME SCENE [OPTIONS...]: whitted's image ($w) and POV-Ray's
+# of scene2pov's export ($out/NAME.png) at size, what they said in $log;
+# fails when any of the three does.
+render_both() {
 	name=$1 scene=$2
 	shift 2
-	case "$name" in *"$filter"*) ;; *) return 0 ;; esac
 	w="$out/$name-whitted.png"
 	log="$out/$name.log"
-	if ! "$build/whitted" -q --clamp final -s "$size" "$@" "$scene" -o "$w" >"$log" 2>&1 ||
-	   ! "$build/scene2pov" -q -s "$size" "$@" "$scene" -o "$out/$name.pov" >>"$log" 2>&1 ||
-	   ! (cd "$out" && HOME="$out/home" povray "$name.ini" +WT2 -V >>"$log" 2>&1); then
+	"$build/whitted" -q --clamp final -s "$size" "$@" "$scene" -o "$w" >"$log" 2>&1 &&
+		"$build/scene2pov" -q -s "$size" "$@" "$scene" -o "$out/$name.pov" >>"$log" 2>&1 &&
+		(cd "$out" && HOME="$out/home" povray "$name.ini" +WT2 -V >>"$log" 2>&1)
+}
+
+# table_row NAME RESULT STATUS: the table's row of imgcmp's RESULT.
+table_row() {
+	row_name=$1 row_status=$3
+	# psnr=X mean=X max=X off2=X% off8=X% PASS|FAIL
+	# shellcheck disable=SC2046
+	set -- $(printf '%s\n' "$2" | sed 's/[a-z0-9]*=//g')
+	printf '%-34s %8s %5s %9s %9s  %s\n' "$row_name" "${1:-?}" "${3:-?}" "${4:-?}" "${5:-?}" \
+		"$row_status"
+}
+
+# gate NAME POV_IMAGE OK_STATUS: imgcmp's gate on whitted's image ($w)
+# against POV_IMAGE, counted, and its row.
+gate() {
+	if result=$("$build/imgcmp" --diff "$out/$1-diff.png" "$w" "$2" 2>>"$log"); then
+		status=$3
+		pass=$((pass + 1))
+	else
+		status="FAIL (difference x32: $out/$1-diff.png)"
+		fail=$((fail + 1))
+		failed="$failed $1"
+	fi
+	table_row "$1" "$result" "$status"
+}
+
+# case NAME SCENE [OPTIONS...]: one row of the table.
+case_run() {
+	case "$1" in *"$filter"*) ;; *) return 0 ;; esac
+	if ! render_both "$@"; then
 		printf '%-34s %s\n' "$name" "ERROR (see $log)"
 		tail -5 "$log" | sed 's/^/    /'
 		fail=$((fail + 1))
 		failed="$failed $name"
 		return 0
 	fi
-	if result=$("$build/imgcmp" --diff "$out/$name-diff.png" "$w" "$out/$name.png" 2>>"$log"); then
-		status=ok
-		pass=$((pass + 1))
-	else
-		status="FAIL (difference x32: $out/$name-diff.png)"
-		fail=$((fail + 1))
-		failed="$failed $name"
-	fi
-	# psnr=X mean=X max=X off2=X% off8=X% PASS|FAIL
-	set -- $(printf '%s\n' "$result" | sed 's/[a-z0-9]*=//g')
-	printf '%-34s %8s %5s %9s %9s  %s\n' "$name" "${1:-?}" "${3:-?}" "${4:-?}" "${5:-?}" "$status"
+	gate "$name" "$out/$name.png" ok
 }
 
 # missing NAME WHY: a row for a comparison that could not be made, which
@@ -98,22 +119,14 @@ quadrant_row() {
 # below): the row says the difference and fails only when the comparison
 # cannot be made.
 measure() {
-	name=$1 scene=$2
-	shift 2
-	case "$name" in *"$filter"*) ;; *) return 0 ;; esac
-	w="$out/$name-whitted.png"
-	log="$out/$name.log"
-	if ! "$build/whitted" -q --clamp final -s "$size" "$@" "$scene" -o "$w" >"$log" 2>&1 ||
-	   ! "$build/scene2pov" -q -s "$size" "$@" "$scene" -o "$out/$name.pov" >>"$log" 2>&1 ||
-	   ! (cd "$out" && HOME="$out/home" povray "$name.ini" +WT2 -V >>"$log" 2>&1); then
+	case "$1" in *"$filter"*) ;; *) return 0 ;; esac
+	if ! render_both "$@"; then
 		missing "$name" "whitted, scene2pov or povray failed (see $log)"
 		return 0
 	fi
 	result=$("$build/imgcmp" --diff "$out/$name-diff.png" "$w" "$out/$name.png" 2>>"$log")
 	pass=$((pass + 1))
-	set -- $(printf '%s\n' "$result" | sed 's/[a-z0-9]*=//g')
-	printf '%-34s %8s %5s %9s %9s  %s\n' "$name" "${1:-?}" "${3:-?}" "${4:-?}" "${5:-?}" \
-		"measured, not gated (falloff: POV-Ray's fade is not exp(-k d^2))"
+	table_row "$name" "$result" "measured, not gated (falloff: POV-Ray's fade is not exp(-k d^2))"
 }
 
 # camera_case NAME SCENE ASPECT EYE LOOK UP FOV TL TR BL BR: see "The

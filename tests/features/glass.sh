@@ -10,14 +10,7 @@
 # tests/unit/render/test_glass.c.  Ends with
 # "glass: N passed, N failed, N skipped".
 set -u
-top=$(cd "$(dirname "$0")/../.." && pwd)
-B=${BUILD:-$top/build}
-W=$B/whitted
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/lib.sh"
 scene=$top/scenes/sphere.txt
 
 for spec in 0 99 1:0 1:-1 1:inf 1:1.5:1 1:1.5:0 1:x 1::0.5 1:1.5:0.5:9 "," 1,,2 -1 2,2:1.2 \

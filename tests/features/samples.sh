@@ -8,14 +8,7 @@
 # --samples 1 is byte-identical to no option.  Ends with "samples: N
 # passed, N failed, N skipped".
 set -u
-top=$(cd "$(dirname "$0")/../.." && pwd)
-B=${BUILD:-$top/build}
-W=$B/whitted
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/lib.sh"
 S=20
 
 # within1 A B: every channel of every pixel within one level.

@@ -11,15 +11,8 @@
 # texels (removed when it fails).  Ends with "texture: N
 # passed, N failed, N skipped".
 set -u
-top=$(cd "$(dirname "$0")/../.." && pwd)
-B=${BUILD:-$top/build}
-W=$B/whitted
+. "$(dirname "$0")/lib.sh"
 T=$top/tests/textures
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0 fail=0
-ok() { pass=$((pass + 1)); }
-bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 
 # A 2x2 image of four points of the floor, (11, 32) (31, 32) / (11, 12)
 # (31, 12), seen from above with the one light at the eye: 0.2 tan(fov/2)

@@ -80,19 +80,26 @@ def rnd_quadric(r):
             rnd_material(r))
 
 
-def rnd_scene(r, many_lights=False):
+def rnd_classic_objects(r, most, sphere_below, triangle_below):
+    """1 to `most` classic objects: a draw below sphere_below a sphere,
+    below triangle_below a triangle, else a quadric."""
     objs = []
-    for _ in range(r.randint(1, 8)):
+    for _ in range(r.randint(1, most)):
         k = r.random()
-        if k < 0.4:
+        if k < sphere_below:
             p = rnd_point(r, 50, 5, 50)
             objs.append('sphere\n%.3f %.3f %.3f\n%.3f\n' % (p + (r.uniform(3, 20),)) + rnd_material(r))
-        elif k < 0.75:
+        elif k < triangle_below:
             c = rnd_point(r, 50, 0, 50)
             verts = [tuple(c[i] + r.uniform(-25, 25) for i in range(3)) for _ in range(3)]
             objs.append('triangle\n' + ''.join('%.3f %.3f %.3f\n' % v for v in verts) + rnd_material(r))
         else:
             objs.append(rnd_quadric(r))
+    return objs
+
+
+def rnd_scene(r, many_lights=False):
+    objs = rnd_classic_objects(r, 8, 0.4, 0.75)
     if many_lights:
         # Dim and each of its own colour, so that the sum does not just
         # clamp to white and a light shaded with another's colour shows.
@@ -118,18 +125,7 @@ def rnd_cutoff(r):
 def rnd_spot_scene(r):
     """classic's objects and coloured point lights, then spotlights aimed
     near the objects."""
-    objs = []
-    for _ in range(r.randint(1, 6)):
-        k = r.random()
-        if k < 0.5:
-            p = rnd_point(r, 50, 5, 50)
-            objs.append('sphere\n%.3f %.3f %.3f\n%.3f\n' % (p + (r.uniform(3, 20),)) + rnd_material(r))
-        elif k < 0.85:
-            c = rnd_point(r, 50, 0, 50)
-            verts = [tuple(c[i] + r.uniform(-25, 25) for i in range(3)) for _ in range(3)]
-            objs.append('triangle\n' + ''.join('%.3f %.3f %.3f\n' % v for v in verts) + rnd_material(r))
-        else:
-            objs.append(rnd_quadric(r))
+    objs = rnd_classic_objects(r, 6, 0.5, 0.85)
     nl = r.randint(0, 3)
     lights = ''.join('%.2f %.2f %.2f\n' % rnd_point(r, 120, 20, 150) + rnd_light_colour(r, 0.5)
                      for _ in range(nl))

@@ -199,3 +199,117 @@ struct scene *support_prepared(const char *text, bool with_floor)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	return s;
 }
+
+int support_hold_shape(void **state, struct shape *s)
+{
+	*state = s;
+	return s ? 0 : -1;
+}
+
+int support_drop_shape(void **state)
+{
+	shape_destroy(*state);
+	return 0;
+}
+
+void support_assert_hit(const struct shape *s, const struct ray *r, double t_min, double *t_max,
+			double t, double eps, const char *file, int line)
+{
+	*t_max = INFINITY;
+	if (!shape_intersect(s, r, t_min, t_max)) {
+		print_error("the ray missed, expected a hit at t = %.17g\n", t);
+		_fail(file, line);
+	}
+	support_assert_near(*t_max, t, eps, "t_max", file, line);
+}
+
+void support_assert_misses(const struct shape *s, const double (*rays)[6], size_t n)
+{
+	size_t i;
+
+	for (i = 0; i < n; i++) {
+		struct ray r = support_ray(rays[i][0], rays[i][1], rays[i][2], rays[i][3],
+					   rays[i][4], rays[i][5]);
+		double t_max = 42.0;
+		if (shape_intersect(s, &r, 0.0, &t_max)) {
+			print_error("ray %zu hit at t = %g\n", i, t_max);
+			fail();
+		}
+		assert_near(t_max, 42.0, 0.0);
+	}
+}
+
+void support_assert_object_error(const struct shape_ops *ops, const struct support_object_error *e)
+{
+	/* Not NULL before: the parse must clear it. */
+	struct shape *s = (struct shape *)&s;
+	struct diag d;
+
+	assert_int_equal(support_parse_object(ops, e->text, &s, &d), -e->rc);
+	assert_null(s);
+	assert_string_equal(d.file, "test.txt");
+	if (d.line != e->line || d.col != e->col || !strstr(d.msg, e->msg)) {
+		print_error("%s:%d:%d: %s\nexpected %d:%d: ...%s...\n", d.file, d.line, d.col, d.msg,
+			    e->line, e->col, e->msg);
+		fail();
+	}
+}
+
+void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
+				 double kr, double shininess, const char *file, int line)
+{
+	support_assert_near(m->ka, ka, 0.0, "ka", file, line);
+	support_assert_near(m->kd, kd, 0.0, "kd", file, line);
+	support_assert_near(m->ks, ks, 0.0, "ks", file, line);
+	support_assert_near(m->kr, kr, 0.0, "kr", file, line);
+	support_assert_near(m->shininess, shininess, 0.0, "shininess", file, line);
+}
+
+void support_settings(struct settings *s, int size, int recursion)
+{
+	settings_init(s);
+	s->size = size;
+	s->recursion = recursion;
+}
+
+unsigned char *support_read_file(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	unsigned char *buf;
+	long n;
+
+	assert_non_null(f);
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	n = ftell(f);
+	assert_true(n >= 0);
+	rewind(f);
+	/* One byte more, so that an empty file has a buffer too. */
+	buf = malloc((size_t)n + 1);
+	assert_non_null(buf);
+	assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
+	fclose(f);
+	*len = (size_t)n;
+	return buf;
+}
+
+size_t support_keyword_list(char *out, size_t size)
+{
+	const struct shape_ops *const *all = shape_ops_all();
+	size_t i, j, used = 0;
+
+	out[0] = '\0';
+	for (i = 0; all[i]; i++) {
+		bool seen = false;
+
+		for (j = 0; j < i; j++)
+			seen = seen || strcmp(all[j]->keyword, all[i]->keyword) == 0;
+		if (seen)
+			continue;
+		used += strlen(all[i]->keyword) + (out[0] ? 2 : 0);
+		assert_true(used < size);
+		if (out[0])
+			strcat(out, ", ");
+		strcat(out, all[i]->keyword);
+	}
+	return i;
+}

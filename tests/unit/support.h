@@ -18,6 +18,7 @@
 #include "whitted/pov.h"
 #include "whitted/ray.h"
 #include "whitted/scene.h"
+#include "whitted/settings.h"
 #include "whitted/vec3.h"
 
 /* assert_float_equal converts to float; these keep doubles. */
@@ -34,6 +35,48 @@ void support_assert_vec3_near(struct vec3 a, struct vec3 b, double eps, const ch
 struct ray support_ray(double ox, double oy, double oz, double dx, double dy, double dz);
 /* The text a shape exports to POV-Ray, NUL-terminated; the caller frees it. */
 char *support_export_pov(const struct shape *s, enum pov_finish finish);
+
+/* A cmocka fixture whose state is one shape: setup_X returns
+ * support_hold_shape(state, X_create(...)) (0, or -1 where creating it
+ * failed), and support_drop_shape destroys it after the test. */
+int support_hold_shape(void **state, struct shape *s);
+int support_drop_shape(void **state);
+
+/* The material's coefficients and shininess, each exactly as given. */
+#define assert_coefficients(m, ka, kd, ks, kr, shininess) \
+	support_assert_coefficients((m), (ka), (kd), (ks), (kr), (shininess), __FILE__, __LINE__)
+void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
+				 double kr, double shininess, const char *file, int line);
+/* A ray that must hit shape s past t_min: *t_max is set to infinity, and
+ * after the call holds the nearest hit, which must be t within eps. */
+#define assert_hit(s, r, t_min, t_max, t, eps) \
+	support_assert_hit((s), (r), (t_min), (t_max), (t), (eps), __FILE__, __LINE__)
+void support_assert_hit(const struct shape *s, const struct ray *r, double t_min, double *t_max,
+			double t, double eps, const char *file, int line);
+/* Each of the n rays (origin, then direction) misses s past 0 and leaves
+ * its t_max (42) as it was. */
+void support_assert_misses(const struct shape *s, const double (*rays)[6], size_t n);
+/* Object tokens that must not parse (support_parse_object): the error
+ * code, the line and column of the offending token, and a part of the
+ * message; no shape made. */
+struct support_object_error {
+	const char *text;
+	int rc, line, col;
+	const char *msg;
+};
+void support_assert_object_error(const struct shape_ops *ops, const struct support_object_error *e);
+
+/* The default settings (settings_init) at this size and recursion. */
+void support_settings(struct settings *s, int size, int recursion);
+
+/* The whole of the file at path (the test fails where it cannot be read),
+ * *len its size; the caller frees it. */
+unsigned char *support_read_file(const char *path, size_t *len);
+
+/* The registry's keywords in its order, each once (a keyword of two
+ * tables, as the pyramid's, once), joined by ", " into out (size bytes,
+ * which must hold them); returns the number of tables. */
+size_t support_keyword_list(char *out, size_t size);
 
 /* Parses scene text; fails the test with the diagnostic when it does not
  * parse.  The caller destroys the scene. */
@@ -86,5 +129,7 @@ int support_run(const char *group, const struct CMUnitTest *tests, size_t n,
 		int argc, char **argv);
 #define SUPPORT_RUN(tests, argc, argv) \
 	support_run(__FILE__, tests, sizeof(tests) / sizeof(tests[0]), argc, argv)
+
+#include "support_main.h"
 
 #endif

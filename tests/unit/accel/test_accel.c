@@ -15,6 +15,7 @@
 #include "accel/accel_kernels.h"
 #include "accel/accel_tree.h"
 #include "shapes/solve.h"
+#include "random_scene.h"
 #include "support.h"
 #include "walk_set.h"
 
@@ -278,18 +279,11 @@ static void test_accel_random_scenes_match_brute_force(void **state)
 
 	(void)state;
 	for (scene_no = 0; scene_no < 12; scene_no++) {
-		struct scene *s = scene_create("random");
-		int n = 1 + scene_no * scene_no * 4, i, hits;
 		double half = 50;
-		struct diag d;
+		struct scene *s = random_scene(add_random_shape, (uint64_t)scene_no + 1,
+					       1 + scene_no * scene_no * 4, half, scene_no % 2 == 0);
+		int hits;
 
-		support_rng_seed((uint64_t)scene_no + 1);
-		assert_non_null(s);
-		for (i = 0; i < n; i++)
-			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
-		if (scene_no % 2 == 0)
-			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
-		assert_int_equal(scene_prepare(s, 1, &d), 0);
 		assert_tree_sound(s);
 		hits = compare_rays(s, 3000, half);
 		/* The rays aimed at shapes mostly hit. */
@@ -314,19 +308,12 @@ static void test_accel_wide_walks_match_the_base_walks(void **state)
 	 * AVX-512 walks are among those compared. */
 	support_need_isa(RT_SIMD_AVX2, accel_walk_usable(RT_SIMD_AVX2));
 	for (scene_no = 0; scene_no < 6; scene_no++) {
-		struct scene *s = scene_create("random");
-		int n = 40 + scene_no * scene_no * 60, i, k;
 		double half = 50;
+		struct scene *s = random_scene(add_random_shape, (uint64_t)scene_no + 101,
+					       40 + scene_no * scene_no * 60, half, scene_no % 2 == 1);
 		struct walk_set w;
-		struct diag d;
+		int i, k;
 
-		support_rng_seed((uint64_t)scene_no + 101);
-		assert_non_null(s);
-		for (i = 0; i < n; i++)
-			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
-		if (scene_no % 2 == 1)
-			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
-		assert_int_equal(scene_prepare(s, 1, &d), 0);
 		walk_set_build(&w, s);
 		assert_true(w.n >= 2);
 		for (k = 0; k < w.n; k++)
@@ -1074,28 +1061,18 @@ static void test_accel_huge_boxes_are_tested_by_every_ray(void **state)
 	scene_destroy(s);
 }
 
-
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_accel_random_scenes_match_brute_force),
-		cmocka_unit_test(test_accel_wide_walks_match_the_base_walks),
-		cmocka_unit_test(test_accel_all_shapes_at_one_centre),
-		cmocka_unit_test(test_accel_one_shape),
-		cmocka_unit_test(test_accel_no_shapes),
-		cmocka_unit_test(test_accel_many_shapes),
-		cmocka_unit_test(test_accel_many_at_one_point),
-		cmocka_unit_test(test_accel_negative_zero_direction),
-		cmocka_unit_test(test_accel_rays_grazing_box_bounds),
-		cmocka_unit_test(test_accel_rays_grazing_clip_faces),
-		cmocka_unit_test(test_accel_threads_build_the_same_tree),
-		cmocka_unit_test(test_accel_threads_median_splits),
-		cmocka_unit_test(test_accel_threads_collapse_the_same_tree),
-		cmocka_unit_test(test_accel_collapse_room_holds_the_fullest_tree),
-		cmocka_unit_test(test_accel_ties_go_to_the_first_in_the_scene),
-		cmocka_unit_test(test_accel_solids_on_the_floor_tie_at_their_edges),
-		cmocka_unit_test(test_accel_huge_boxes_are_tested_by_every_ray),
-		cmocka_unit_test(test_accel_pyramid_edge_on_the_floor),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_accel_random_scenes_match_brute_force,
+			   test_accel_wide_walks_match_the_base_walks,
+			   test_accel_all_shapes_at_one_centre, test_accel_one_shape,
+			   test_accel_no_shapes, test_accel_many_shapes,
+			   test_accel_many_at_one_point, test_accel_negative_zero_direction,
+			   test_accel_rays_grazing_box_bounds,
+			   test_accel_rays_grazing_clip_faces,
+			   test_accel_threads_build_the_same_tree,
+			   test_accel_threads_median_splits,
+			   test_accel_threads_collapse_the_same_tree,
+			   test_accel_collapse_room_holds_the_fullest_tree,
+			   test_accel_ties_go_to_the_first_in_the_scene,
+			   test_accel_solids_on_the_floor_tie_at_their_edges,
+			   test_accel_huge_boxes_are_tested_by_every_ray,
+			   test_accel_pyramid_edge_on_the_floor))

@@ -382,15 +382,8 @@ static void test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doub
 	assert_true(floats > trials / 10);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_float_box_tests_enter_every_box_the_double_test_enters),
-		cmocka_unit_test(test_float_box_tests_leave_rays_they_cannot_bound_to_doubles),
-		cmocka_unit_test(test_float_box_tests_origins_below_the_normal_floats),
-		cmocka_unit_test(test_float_box_tests_of_packets_enter_every_box_the_double_test_enters),
-		cmocka_unit_test(test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doubles),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_float_box_tests_enter_every_box_the_double_test_enters,
+			   test_float_box_tests_leave_rays_they_cannot_bound_to_doubles,
+			   test_float_box_tests_origins_below_the_normal_floats,
+			   test_float_box_tests_of_packets_enter_every_box_the_double_test_enters,
+			   test_float_box_tests_of_packets_leave_rays_they_cannot_bound_to_doubles))

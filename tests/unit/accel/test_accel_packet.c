@@ -13,6 +13,7 @@
 
 #include "accel/accel.h"
 #include "accel/accel_tree.h"
+#include "random_scene.h"
 #include "support.h"
 #include "walk_set.h"
 
@@ -248,18 +249,11 @@ static void test_packet_random_scenes_match_single_rays(void **state)
 
 	(void)state;
 	for (scene_no = 0; scene_no < 10; scene_no++) {
-		struct scene *s = scene_create("random");
-		int n = 1 + scene_no * scene_no * 20, i, k;
 		double half = 50;
-		struct diag d;
+		struct scene *s = random_scene(add_random_shape, (uint64_t)scene_no + 7,
+					       1 + scene_no * scene_no * 20, half, scene_no % 3 == 0);
+		int k;
 
-		support_rng_seed((uint64_t)scene_no + 7);
-		assert_non_null(s);
-		for (i = 0; i < n; i++)
-			add_random_shape(s, support_random_point(half), support_uniform(0.5, 10));
-		if (scene_no % 3 == 0)
-			assert_int_equal(scene_add_floor(s, 80, 8, &d), 0);
-		assert_int_equal(scene_prepare(s, 1, &d), 0);
 		walk_set_build(&w, s);
 		for (k = 0; k < 600; k++) {
 			struct ray r[ACCEL_PACKET];
@@ -649,17 +643,10 @@ static void test_packet_stray_bits_of_a_method_are_dropped(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_packet_random_scenes_match_single_rays),
-		cmocka_unit_test(test_packet_ties_keep_the_single_walks_shape),
-		cmocka_unit_test(test_packet_rays_along_faces_and_edges),
-		cmocka_unit_test(test_packet_rays_at_the_float_limits),
-		cmocka_unit_test(test_packet_unbounded_and_empty),
-		cmocka_unit_test(test_packet_shape_packet_method),
-		cmocka_unit_test(test_packet_stray_bits_of_a_method_are_dropped),
-		cmocka_unit_test(test_packet_default_method_full_mask),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_packet_random_scenes_match_single_rays,
+			   test_packet_ties_keep_the_single_walks_shape,
+			   test_packet_rays_along_faces_and_edges,
+			   test_packet_rays_at_the_float_limits,
+			   test_packet_unbounded_and_empty, test_packet_shape_packet_method,
+			   test_packet_stray_bits_of_a_method_are_dropped,
+			   test_packet_default_method_full_mask))

@@ -201,13 +201,6 @@ static void test_accel_split_child_box_rounds_outwards(void **state)
 	}
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_accel_split_partition_matches_plain_loop),
-		cmocka_unit_test(test_accel_split_pairs_match_binning),
-		cmocka_unit_test(test_accel_split_child_box_rounds_outwards),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_accel_split_partition_matches_plain_loop,
+			   test_accel_split_pairs_match_binning,
+			   test_accel_split_child_box_rounds_outwards))

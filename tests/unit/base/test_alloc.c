@@ -419,21 +419,9 @@ static void test_alloc_counter(void **state)
 	assert_int_equal(rt_alloc_fail_from(0), 0);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_alloc_counter),
-		cmocka_unit_test(test_alloc_aligned),
-		cmocka_unit_test(test_alloc_sweep_scene_parse),
-		cmocka_unit_test(test_alloc_sweep_many_objects),
-		cmocka_unit_test(test_alloc_sweep_prepare_again),
-		cmocka_unit_test(test_alloc_sweep_scene_load),
-		cmocka_unit_test(test_alloc_sweep_test_scene_and_cli_load),
-		cmocka_unit_test(test_alloc_calloc_huge),
-		cmocka_unit_test(test_alloc_array_huge),
-		cmocka_unit_test(test_alloc_image),
-		cmocka_unit_test(test_alloc_image_write),
-		cmocka_unit_test(test_alloc_render_allocates_nothing),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_alloc_counter, test_alloc_aligned, test_alloc_sweep_scene_parse,
+			   test_alloc_sweep_many_objects, test_alloc_sweep_prepare_again,
+			   test_alloc_sweep_scene_load,
+			   test_alloc_sweep_test_scene_and_cli_load, test_alloc_calloc_huge,
+			   test_alloc_array_huge, test_alloc_image, test_alloc_image_write,
+			   test_alloc_render_allocates_nothing))

@@ -76,13 +76,5 @@ static void test_diag_format_truncates(void **state)
 	assert_memory_equal(buf, "scene.txt:1:2: ", 15);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_diag_set_fills_and_returns_negative),
-		cmocka_unit_test(test_diag_clear_zeroes),
-		cmocka_unit_test(test_diag_format_forms),
-		cmocka_unit_test(test_diag_format_truncates),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_diag_set_fills_and_returns_negative, test_diag_clear_zeroes,
+			   test_diag_format_forms, test_diag_format_truncates))

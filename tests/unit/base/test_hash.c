@@ -71,14 +71,5 @@ static void test_hash_of_scenes(void **state)
 	scene_destroy(s);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_hash_fnv1a_vectors),
-		cmocka_unit_test(test_hash_in_pieces),
-		cmocka_unit_test(test_hash_threaded_equals_plain),
-		cmocka_unit_test(test_hash_of_scenes),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_hash_fnv1a_vectors, test_hash_in_pieces,
+			   test_hash_threaded_equals_plain, test_hash_of_scenes))

@@ -101,16 +101,6 @@ static void test_platform_peak_memory(void **state)
 	assert_string_equal(rt_platform_note(), "");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_platform_cpu_count),
-		cmocka_unit_test(test_platform_aligned_blocks),
-		cmocka_unit_test(test_platform_rename_over),
-		cmocka_unit_test(test_platform_paths),
-		cmocka_unit_test(test_platform_shared_object_refused),
-		cmocka_unit_test(test_platform_peak_memory),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_platform_cpu_count, test_platform_aligned_blocks,
+			   test_platform_rename_over, test_platform_paths,
+			   test_platform_shared_object_refused, test_platform_peak_memory))

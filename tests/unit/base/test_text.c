@@ -62,13 +62,4 @@ static void test_text_word_list(void **state)
 	assert_string_equal(text_word_list(small, sizeof(small), ".", w, 3), ".png,");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_text_utf8_length),
-		cmocka_unit_test(test_text_shell_word),
-		cmocka_unit_test(test_text_word_list),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_text_utf8_length, test_text_shell_word, test_text_word_list))

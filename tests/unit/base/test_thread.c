@@ -54,12 +54,4 @@ static void test_run_parts_of_nothing(void **state)
 	assert_int_equal(p.runs, 0);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_run_parts_runs_each_part_once),
-		cmocka_unit_test(test_run_parts_of_nothing),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_run_parts_runs_each_part_once, test_run_parts_of_nothing))

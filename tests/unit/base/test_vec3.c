@@ -26,12 +26,4 @@ static void test_vec3_add_scaled(void **state)
 			 vec3_make(3, 0, 4), 0.0);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_vec3_dot_and_cross),
-		cmocka_unit_test(test_vec3_normalize),
-		cmocka_unit_test(test_vec3_add_scaled),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_vec3_dot_and_cross, test_vec3_normalize, test_vec3_add_scaled))

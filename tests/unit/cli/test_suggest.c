@@ -68,11 +68,4 @@ static void test_suggest_refusals(void **state)
 	}
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_suggest_slips),
-		cmocka_unit_test(test_suggest_refusals),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_suggest_slips, test_suggest_refusals))

@@ -69,12 +69,5 @@ static void test_frames_path_interpolation(void **state)
 	assert_vec3_near(out.eye, keys[0].eye, 0.0);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_frames_pattern),
-		cmocka_unit_test(test_frames_orbit),
-		cmocka_unit_test(test_frames_path_interpolation),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_frames_pattern, test_frames_orbit,
+			   test_frames_path_interpolation))

@@ -48,9 +48,7 @@ static void write_tiles(struct tiles *t)
 
 	assert_non_null(mkdtemp(dir));
 	memcpy(t->dir, dir, sizeof(dir));
-	settings_init(&st);
-	st.size = FULL_W;
-	st.recursion = 1;
+	support_settings(&st, FULL_W, 1);
 	for (j = 0; j < ROWS; j++) {
 		for (i = 0; i < COLS; i++) {
 			int k = j * COLS + i;
@@ -155,11 +153,5 @@ static void test_merge_gap_in_last_row_or_column(void **state)
 	remove_tiles(&t);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_merge_every_pixel_back_in_place),
-		cmocka_unit_test(test_merge_gap_in_last_row_or_column),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_merge_every_pixel_back_in_place,
+			   test_merge_gap_in_last_row_or_column))

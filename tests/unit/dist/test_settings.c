@@ -16,23 +16,28 @@ static uint64_t text_hash(const char *text)
 	return hash_bytes(RT_HASH_INIT, text, strlen(text));
 }
 
+/* The canonical text of s is want, byte for byte, and hashes to hash. */
+static void assert_canonical(const struct settings *s, const char *want, uint64_t hash)
+{
+	char text[RT_SETTINGS_TEXT_MAX];
+
+	settings_format(s, text, sizeof(text));
+	assert_string_equal(text, want);
+	assert_true(text_hash(text) == hash);
+}
+
 static void test_settings_canonical_default(void **state)
 {
 	struct settings s;
-	char text[RT_SETTINGS_TEXT_MAX];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 768;
-	s.recursion = 4;
-	settings_format(&s, text, sizeof(text));
-	assert_string_equal(text, "size=768 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
-			    "floor=1000,20 clamp=level");
+	support_settings(&s, 768, 4);
 	/* docs/distributed.md's example tile. */
-	assert_true(text_hash(text) == UINT64_C(0x0d6eecfc8023d2fa));
+	assert_canonical(&s, "size=768 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
+			     "floor=1000,20 clamp=level",
+			     UINT64_C(0x0d6eecfc8023d2fa));
 }
 
-/* Numbers that need 16 and 17 digits, an exponent and a negative zero. */
 /* A forced dialect is a setting: the same text read as another dialect is
  * another scene.  Auto (the default) leaves the text as it was. */
 static void test_settings_canonical_dialect(void **state)
@@ -41,9 +46,7 @@ static void test_settings_canonical_dialect(void **state)
 	char text[RT_SETTINGS_TEXT_MAX], options[RT_SETTINGS_TEXT_MAX];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 768;
-	s.recursion = 4;
+	support_settings(&s, 768, 4);
 	s.dialect = RT_DIALECT_SPOT;
 	settings_format(&s, text, sizeof(text));
 	assert_string_equal(text, "size=768 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
@@ -53,44 +56,43 @@ static void test_settings_canonical_dialect(void **state)
 	assert_null(strstr(options, "dialect"));
 }
 
+/* Numbers that need 16 and 17 digits, an exponent and a negative zero
+ * (and the other clamp). */
+static void set_hard_numbers(struct settings *s)
+{
+	s->camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
+	s->camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
+	s->camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
+	s->camera.fov_deg = 80.00000000000001;
+	s->floor_width = 600.5;
+	s->floor_tile = 0.1;
+	s->clamp = RT_CLAMP_FINAL;
+}
+
 static void test_settings_canonical_digits(void **state)
 {
 	struct settings s;
-	char text[RT_SETTINGS_TEXT_MAX];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 33;
-	s.recursion = 2;
-	s.camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
-	s.camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
-	s.camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
-	s.camera.fov_deg = 80.00000000000001;
-	s.floor_width = 600.5;
-	s.floor_tile = 0.1;
-	s.clamp = RT_CLAMP_FINAL;
-	settings_format(&s, text, sizeof(text));
-	assert_string_equal(text, "size=33 recursion=2 eye=0.1,-199.99999999999997,1e-300 "
-			    "look=0.3333333333333333,2e+17,-7.25 "
-			    "up=-0,0.30000000000000004,0.9539392014169455 fov=80.00000000000001 "
-			    "floor=600.5,0.1 clamp=final");
-	assert_true(text_hash(text) == UINT64_C(0xcfa30ec83b7f7519));
+	support_settings(&s, 33, 2);
+	set_hard_numbers(&s);
+	assert_canonical(&s, "size=33 recursion=2 eye=0.1,-199.99999999999997,1e-300 "
+			     "look=0.3333333333333333,2e+17,-7.25 "
+			     "up=-0,0.30000000000000004,0.9539392014169455 fov=80.00000000000001 "
+			     "floor=600.5,0.1 clamp=final",
+			     UINT64_C(0xcfa30ec83b7f7519));
 }
 
 static void test_settings_canonical_no_floor(void **state)
 {
 	struct settings s;
-	char text[RT_SETTINGS_TEXT_MAX];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 20;
-	s.recursion = 4;
+	support_settings(&s, 20, 4);
 	s.floor = false;
-	settings_format(&s, text, sizeof(text));
-	assert_string_equal(text, "size=20 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
-			    "floor=none clamp=level");
-	assert_true(text_hash(text) == UINT64_C(0x9ff302fa316485dc));
+	assert_canonical(&s, "size=20 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
+			     "floor=none clamp=level",
+			     UINT64_C(0x9ff302fa316485dc));
 }
 
 /* The longest numbers fit, and a short buffer is cut, never overrun. */
@@ -101,9 +103,7 @@ static void test_settings_canonical_bounds(void **state)
 	double v = -2.2250738585072014e-308;
 
 	(void)state;
-	settings_init(&s);
-	s.size = 1000000;
-	s.recursion = 1000;
+	support_settings(&s, 1000000, 1000);
 	s.camera.eye = s.camera.look = s.camera.up = vec3_make(v, v, v);
 	s.camera.fov_deg = s.floor_width = s.floor_tile = v;
 	settings_format(&s, text, sizeof(text));
@@ -134,9 +134,7 @@ static void parse_options(const char *options, struct settings *out)
 	while ((c = getopt_long(argc, argv, CLI_SCENE_SHORT, longopts, NULL)) != -1)
 		assert_int_equal(cli_scene_option(&o, c, optarg, &d), 1);
 	assert_int_equal(optind, argc);
-	settings_init(out);
-	out->size = o.size;
-	out->recursion = o.recursion;
+	support_settings(out, o.size, o.recursion);
 	out->camera = o.camera;
 	out->floor = !o.no_floor;
 	out->floor_width = o.floor_width;
@@ -162,17 +160,9 @@ static void test_settings_options_round_trip(void **state)
 	struct settings s;
 
 	(void)state;
-	settings_init(&s);
-	s.size = 768;
-	s.recursion = 4;
+	support_settings(&s, 768, 4);
 	assert_options_round_trip(&s);
-	s.camera.eye = vec3_make(0.1, -199.99999999999997, 1e-300);
-	s.camera.look = vec3_make(1.0 / 3.0, 2e17, -7.25);
-	s.camera.up = vec3_make(-0.0, 0.1 + 0.2, 0.9539392014169456);
-	s.camera.fov_deg = 80.00000000000001;
-	s.floor_width = 600.5;
-	s.floor_tile = 0.1;
-	s.clamp = RT_CLAMP_FINAL;
+	set_hard_numbers(&s);
 	assert_options_round_trip(&s);
 	s.floor = false;
 	assert_options_round_trip(&s);
@@ -184,9 +174,7 @@ static void test_settings_options_text(void **state)
 	char options[512];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 64;
-	s.recursion = 3;
+	support_settings(&s, 64, 3);
 	assert_int_equal(settings_format_options(&s, options, sizeof(options)), 0);
 	/* The view first; the floor and clamping at their defaults left out. */
 	assert_string_equal(options, " --eye 0,-200,10 --look 0,0,0 --up 0,0,1 --fov 80 --size 64 "
@@ -209,9 +197,7 @@ static void test_settings_options_text(void **state)
  * value is the classic text. */
 static void nearfar_settings(struct settings *s)
 {
-	settings_init(s);
-	s->size = 768;
-	s->recursion = 3;
+	support_settings(s, 768, 3);
 	s->camera.fov_deg = 80;
 	s->camera.near = 1;
 	s->camera.aspect = 1.5;
@@ -276,9 +262,7 @@ static void test_settings_canonical_plugins(void **state)
 	char text[RT_SETTINGS_TEXT_MAX], options[1024];
 
 	(void)state;
-	settings_init(&s);
-	s.size = 768;
-	s.recursion = 4;
+	support_settings(&s, 768, 4);
 	s.plugins = "";
 	settings_format(&s, text, sizeof(text));
 	assert_string_equal(text, "size=768 recursion=4 eye=0,-200,10 look=0,0,0 up=0,0,1 fov=80 "
@@ -307,9 +291,7 @@ static void test_settings_options_nearfar(void **state)
 	assert_string_equal(options, " --eye 0,-200,10 --look 0,0,0 --up 0,0,1 --fov 80 --size 768 "
 			    "--recursion 3 --no-floor");
 	/* --floor 1000,20 given for a nearfar file. */
-	settings_init(&s);
-	s.size = 8;
-	s.recursion = 1;
+	support_settings(&s, 8, 1);
 	s.camera.near = 1;
 	s.floor_from_view = false;
 	assert_int_equal(settings_format_options(&s, options, sizeof(options)), 0);
@@ -324,19 +306,8 @@ static void test_settings_options_nearfar(void **state)
 	assert_int_equal(settings_format_options(&s, options, sizeof(options)), -RT_E_INVALID);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_settings_canonical_default),
-		cmocka_unit_test(test_settings_canonical_dialect),
-		cmocka_unit_test(test_settings_canonical_digits),
-		cmocka_unit_test(test_settings_canonical_no_floor),
-		cmocka_unit_test(test_settings_canonical_bounds),
-		cmocka_unit_test(test_settings_options_round_trip),
-		cmocka_unit_test(test_settings_options_text),
-		cmocka_unit_test(test_settings_canonical_nearfar),
-		cmocka_unit_test(test_settings_options_nearfar),
-		cmocka_unit_test(test_settings_canonical_plugins),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_settings_canonical_default, test_settings_canonical_dialect,
+			   test_settings_canonical_digits, test_settings_canonical_no_floor,
+			   test_settings_canonical_bounds, test_settings_options_round_trip,
+			   test_settings_options_text, test_settings_canonical_nearfar,
+			   test_settings_options_nearfar, test_settings_canonical_plugins))

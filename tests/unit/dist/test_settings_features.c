@@ -16,9 +16,7 @@ static const char classic_text[] =
 
 static void base(struct settings *s)
 {
-	settings_init(s);
-	s->size = 64;
-	s->recursion = 3;
+	support_settings(s, 64, 3);
 }
 
 static void test_settings_features_defaults_leave_the_text(void **state)
@@ -110,13 +108,6 @@ static void test_settings_features_parsed(void **state)
 	assert_int_equal(cli_scene_option(&o, CLI_OPT_FLOOR_TEXTURE, "a,b,c", &d), -RT_E_INVALID);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_settings_features_defaults_leave_the_text),
-		cmocka_unit_test(test_settings_features_in_the_text),
-		cmocka_unit_test(test_settings_features_long_paths_fit),
-		cmocka_unit_test(test_settings_features_parsed),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_settings_features_defaults_leave_the_text,
+			   test_settings_features_in_the_text,
+			   test_settings_features_long_paths_fit, test_settings_features_parsed))

@@ -15,21 +15,24 @@
 
 static char tmpdir[64];
 
-static int setup_dir(void)
+static int setup_dir(void **state)
 {
 	const char *base = getenv("TMPDIR");
 
+	(void)state;
 	snprintf(tmpdir, sizeof(tmpdir), "%s/test_tile.XXXXXX", base && *base ? base : "/tmp");
 	return mkdtemp(tmpdir) ? 0 : -1;
 }
 
-static void teardown_dir(void)
+static int teardown_dir(void **state)
 {
 	char cmd[128];
 
+	(void)state;
 	snprintf(cmd, sizeof(cmd), "rm -rf '%s'", tmpdir);
 	if (system(cmd) != 0)
 		fprintf(stderr, "test_tile: could not remove %s\n", tmpdir);
+	return 0;
 }
 
 static const char *tmp_path(const char *name)
@@ -38,18 +41,6 @@ static const char *tmp_path(const char *name)
 
 	snprintf(path, sizeof(path), "%s/%s", tmpdir, name);
 	return path;
-}
-
-static unsigned char *slurp(const char *path, size_t *n)
-{
-	FILE *f = fopen(path, "rb");
-	unsigned char *b = malloc(1 << 20);
-
-	assert_non_null(f);
-	assert_non_null(b);
-	*n = fread(b, 1, 1 << 20, f);
-	fclose(f);
-	return b;
 }
 
 static void spill(const char *path, const void *b, size_t n)
@@ -86,9 +77,7 @@ static void make_tile(struct tile_info *info, struct image *img, int x0, int y0,
 	struct diag d;
 	int i;
 
-	settings_init(&s);
-	s.size = 16;
-	s.recursion = 3;
+	support_settings(&s, 16, 3);
 	tile_info_init(info, &s, UINT64_C(0x0123456789abcdef), x0, y0, x1, y1);
 	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
 	for (i = 0; i < img->width * img->height * 3; i++)
@@ -202,24 +191,32 @@ static void test_tile_png_round_trip(void **state)
 	image_free(&img);
 }
 
+/* The bytes of the tile 3 2 10 7 (make_tile) written to path; *info its
+ * record.  The caller frees them. */
+static unsigned char *written_tile(struct tile_info *info, const char *path, size_t *n)
+{
+	struct image img;
+	struct diag d;
+
+	make_tile(info, &img, 3, 2, 10, 7);
+	assert_int_equal(tile_write(path, &img, info, NULL, &d), 0);
+	image_free(&img);
+	return support_read_file(path, n);
+}
+
 /* The chunks in the file: oFFs, vpAg and tEXt, all before the image data. */
 static void test_tile_png_chunks(void **state)
 {
 	static const unsigned char offs[9] = { 0, 0, 0, 3, 0, 0, 0, 2, 0 };
 	static const unsigned char vpag[9] = { 0, 0, 0, 16, 0, 0, 0, 16, 0 };
 	struct tile_info info;
-	struct image img;
 	const char *path = tmp_path("chunks.png");
 	char text[RT_TILE_TEXT_MAX];
 	size_t n, o, v, t, idat;
 	unsigned char *b;
-	struct diag d;
 
 	(void)state;
-	make_tile(&info, &img, 3, 2, 10, 7);
-	assert_int_equal(tile_write(path, &img, &info, NULL, &d), 0);
-	image_free(&img);
-	b = slurp(path, &n);
+	b = written_tile(&info, path, &n);
 	o = find_chunk(b, n, "oFFs");
 	v = find_chunk(b, n, "vpAg");
 	t = find_chunk(b, n, "tEXt");
@@ -274,10 +271,7 @@ static void test_tile_png_damaged(void **state)
 	struct diag d;
 
 	(void)state;
-	make_tile(&info, &img, 3, 2, 10, 7);
-	assert_int_equal(tile_write(path, &img, &info, NULL, &d), 0);
-	image_free(&img);
-	b = slurp(path, &n);
+	b = written_tile(&info, path, &n);
 	assert_damage_refused(b, n, "tEXt");
 	assert_damage_refused(b, n, "oFFs");
 	assert_damage_refused(b, n, "vpAg");
@@ -339,8 +333,8 @@ static void test_tile_png_same_image_data(void **state)
 	assert_int_equal(tile_write(tile, &img, &info, NULL, &d), 0);
 	assert_int_equal(image_write(&img, plain, RT_FORMAT_PNG, NULL, &d), 0);
 	image_free(&img);
-	a = slurp(tile, &na);
-	b = slurp(plain, &nb);
+	a = support_read_file(tile, &na);
+	b = support_read_file(plain, &nb);
 	ia = find_chunk(a, na, "IDAT");
 	ib = find_chunk(b, nb, "IDAT");
 	assert_true(ia && ib);
@@ -367,25 +361,9 @@ static void test_tile_write_refused(void **state)
 	image_free(&img);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_tile_info_init),
-		cmocka_unit_test(test_tile_check_region),
-		cmocka_unit_test(test_tile_text_round_trip),
-		cmocka_unit_test(test_tile_text_refused),
-		cmocka_unit_test(test_tile_png_round_trip),
-		cmocka_unit_test(test_tile_png_chunks),
-		cmocka_unit_test(test_tile_png_damaged),
-		cmocka_unit_test(test_tile_not_a_tile),
-		cmocka_unit_test(test_tile_png_same_image_data),
-		cmocka_unit_test(test_tile_write_refused),
-	};
-	int rc;
-
-	if (setup_dir() < 0)
-		return 1;
-	rc = SUPPORT_RUN(tests, argc, argv);
-	teardown_dir();
-	return rc;
-}
+SUPPORT_MAIN_AROUND(setup_dir, teardown_dir,
+		    SUPPORT_TESTS(test_tile_info_init, test_tile_check_region,
+				  test_tile_text_round_trip, test_tile_text_refused,
+				  test_tile_png_round_trip, test_tile_png_chunks,
+				  test_tile_png_damaged, test_tile_not_a_tile,
+				  test_tile_png_same_image_data, test_tile_write_refused))

@@ -7,6 +7,7 @@
 #include "course_scene.h"
 #include "grade/grade_impl.h"
 #include "render/shade_rules.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 struct job_setup {
@@ -20,17 +21,9 @@ static void job_make(struct job_setup *j, int size, bool square)
 	struct camera_params p;
 	struct diag d;
 
-	j->s = support_parse(course_scene);
-	assert_int_equal(scene_add_view_floor(j->s, &d), 0);
-	assert_int_equal(scene_prepare(j->s, 1, &d), 0);
-	camera_params_default(&p);
+	j->s = grade_fixture_scene(course_scene, &p);
 	assert_int_equal(camera_init_rect(&j->cam, &p, size, square ? size : size / 2, &d), 0);
-	memset(&j->job, 0, sizeof(j->job));
-	j->job.scene = j->s;
-	j->job.camera = &j->cam;
-	j->job.settings.recursion = 4;
-	j->job.settings.clamp = RT_CLAMP_LEVEL;
-	j->job.threads = 1;
+	grade_fixture_job(&j->job, j->s, &j->cam, 4, 1);
 }
 
 static void test_causes_forms(void **state)
@@ -218,14 +211,5 @@ static void test_causes_other_floor_in_the_trace(void **state)
 	scene_destroy(j.s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_causes_forms),
-		cmocka_unit_test(test_causes_combine),
-		cmocka_unit_test(test_causes_spot_cone),
-		cmocka_unit_test(test_causes_other_floor_in_the_trace),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_causes_forms, test_causes_combine, test_causes_spot_cone,
+			   test_causes_other_floor_in_the_trace))

@@ -8,6 +8,7 @@
 #include "base/alloc.h"
 #include "course_scene.h"
 #include "grade/grade_impl.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 static void image_of(struct image *img, int w, int h, const uint8_t *px)
@@ -192,12 +193,7 @@ static void test_grade_allocation_failures(void **state)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	camera_params_default(&p);
 	assert_int_equal(camera_init(&cam, &p, 72, &d), 0);
-	memset(&job, 0, sizeof(job));
-	job.scene = s;
-	job.camera = &cam;
-	job.settings.recursion = s->recursion;
-	job.settings.clamp = RT_CLAMP_LEVEL;
-	job.threads = 2;
+	grade_fixture_job(&job, s, &cam, s->recursion, 2);
 	assert_int_equal(grade_render_reference(&job, &ref, &d), 0);
 	assert_int_equal(grade_transform_map(&ref, GRADE_MAP_RED_BLUE, &sub, &d), 0);
 	assert_int_equal(image_encode_png(&sub, &png, &png_len, &d), 0);
@@ -252,12 +248,7 @@ static void test_grade_wrap_both_ways(void **state)
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	camera_params_default(&p);
 	assert_int_equal(camera_init(&cam, &p, 1, &d), 0);
-	memset(&job, 0, sizeof(job));
-	job.scene = s;
-	job.camera = &cam;
-	job.settings.recursion = s->recursion;
-	job.settings.clamp = RT_CLAMP_LEVEL;
-	job.threads = 1;
+	grade_fixture_job(&job, s, &cam, s->recursion, 1);
 	assert_int_equal(image_alloc(&round, 1, 1, &d), 0);
 	assert_int_equal(image_alloc(&trunc, 1, 1, &d), 0);
 	assert_true(grade_variant_of(&job, RT_CAUSE_NEVER_CLAMP, 0, &wrap));
@@ -273,17 +264,7 @@ static void test_grade_wrap_both_ways(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_grade_figures_by_hand),
-		cmocka_unit_test(test_grade_gate_edges),
-		cmocka_unit_test(test_grade_transforms),
-		cmocka_unit_test(test_grade_diff_image),
-		cmocka_unit_test(test_grade_allocation_failures),
-		cmocka_unit_test(test_grade_outliers_left_out),
-		cmocka_unit_test(test_grade_wrap_both_ways),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_grade_figures_by_hand, test_grade_gate_edges,
+			   test_grade_transforms, test_grade_diff_image,
+			   test_grade_allocation_failures, test_grade_outliers_left_out,
+			   test_grade_wrap_both_ways))

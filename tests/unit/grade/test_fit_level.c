@@ -10,6 +10,7 @@
 
 #include "course_scene.h"
 #include "grade/fit.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 static void test_fit_view_round_trip(void **state)
@@ -124,12 +125,7 @@ static void setup_make(struct setup *s, int size)
 	camera_params_default(&s->params);
 	s->params.eye = vec3_make(25.0, -170.0, 35.0);
 	assert_int_equal(camera_init(&s->cam, &s->params, size, &d), 0);
-	memset(&s->job, 0, sizeof(s->job));
-	s->job.scene = s->scene;
-	s->job.camera = &s->cam;
-	s->job.settings.recursion = scene_recursion(s->scene);
-	s->job.settings.clamp = RT_CLAMP_LEVEL;
-	s->job.threads = 1;
+	grade_fixture_job(&s->job, s->scene, &s->cam, scene_recursion(s->scene), 1);
 	assert_int_equal(grade_render_reference(&s->job, &s->sub, &d), 0);
 }
 
@@ -405,18 +401,9 @@ static void test_fit_level_with_a_cause(void **state)
 	setup_free(&s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_fit_view_round_trip),
-		cmocka_unit_test(test_fit_moves),
-		cmocka_unit_test(test_fit_level_true_camera_scores_nothing),
-		cmocka_unit_test(test_fit_blur_keeps_flat_and_sum),
-		cmocka_unit_test(test_fit_blur_is_the_gaussian),
-		cmocka_unit_test(test_fit_level_weighs_aliased_cells),
-		cmocka_unit_test(test_fit_level_jacobian_against_differences),
-		cmocka_unit_test(test_fit_level_with_a_cause),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_fit_view_round_trip, test_fit_moves,
+			   test_fit_level_true_camera_scores_nothing,
+			   test_fit_blur_keeps_flat_and_sum, test_fit_blur_is_the_gaussian,
+			   test_fit_level_weighs_aliased_cells,
+			   test_fit_level_jacobian_against_differences,
+			   test_fit_level_with_a_cause))

@@ -11,6 +11,7 @@
 #include "course_scene.h"
 #include "grade/grade_impl.h"
 #include "render/shade_rules.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 #define SIZE 96
@@ -26,17 +27,9 @@ static void setup_make(struct setup *t)
 	struct camera_params p;
 	struct diag d;
 
-	t->s = support_parse(course_scene);
-	assert_int_equal(scene_add_view_floor(t->s, &d), 0);
-	assert_int_equal(scene_prepare(t->s, 1, &d), 0);
-	camera_params_default(&p);
+	t->s = grade_fixture_scene(course_scene, &p);
 	assert_int_equal(camera_init(&t->cam, &p, SIZE, &d), 0);
-	memset(&t->job, 0, sizeof(t->job));
-	t->job.scene = t->s;
-	t->job.camera = &t->cam;
-	t->job.settings.recursion = t->s->recursion;
-	t->job.settings.clamp = RT_CLAMP_LEVEL;
-	t->job.threads = 2;
+	grade_fixture_job(&t->job, t->s, &t->cam, t->s->recursion, 2);
 }
 
 /* The submission with the floor's finish f (NULL: the scene's) and the
@@ -168,12 +161,5 @@ static void test_floor_finish_ranked(void **state)
 	scene_destroy(t.s);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_floor_finish_found),
-		cmocka_unit_test(test_floor_finish_none),
-		cmocka_unit_test(test_floor_finish_ranked),
-	};
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_floor_finish_found, test_floor_finish_none,
+			   test_floor_finish_ranked))

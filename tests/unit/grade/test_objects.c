@@ -6,6 +6,7 @@
 
 #include "base/alloc.h"
 #include "grade/grade_impl.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 /* A red sphere of radius 25 at the origin, half under the floor, seen from the
@@ -27,17 +28,9 @@ static void world_make(struct world *w)
 	struct camera_params p;
 	struct diag d;
 
-	w->s = support_parse(one_sphere);
-	assert_int_equal(scene_add_view_floor(w->s, &d), 0);
-	assert_int_equal(scene_prepare(w->s, 1, &d), 0);
-	camera_params_default(&p);
+	w->s = grade_fixture_scene(one_sphere, &p);
 	assert_int_equal(camera_init(&w->cam, &p, 41, &d), 0);
-	memset(&w->job, 0, sizeof(w->job));
-	w->job.scene = w->s;
-	w->job.camera = &w->cam;
-	w->job.settings.recursion = 1;
-	w->job.settings.clamp = RT_CLAMP_LEVEL;
-	w->job.threads = 2;
+	grade_fixture_job(&w->job, w->s, &w->cam, 1, 2);
 	assert_int_equal(grade_render_reference(&w->job, &w->ref, &d), 0);
 	assert_int_equal(grade_object_ids(&w->job, w->ids, &d), 0);
 }
@@ -147,13 +140,5 @@ static void test_grade_diff_picture(void **state)
 	world_free(&w);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_grade_object_ids),
-		cmocka_unit_test(test_grade_objects_figures),
-		cmocka_unit_test(test_grade_diff_picture),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_grade_object_ids, test_grade_objects_figures,
+			   test_grade_diff_picture))

@@ -12,6 +12,7 @@
 #include "course_scene.h"
 #include "grade/grade_impl.h"
 #include "render/shade_rules.h"
+#include "grade_fixture.h"
 #include "support.h"
 
 #define SIZE 96
@@ -43,9 +44,9 @@ static void test_rank_exact_figures(void **state)
 		{ RT_RULE_WHITE_SPECULAR | RT_RULE_NO_SHADOWS, NULL },
 		{ 0, &small },
 	};
-	struct scene *s = support_parse(course_scene);
-	struct grade_rank ranks[GRADE_MAX_RANKS];
 	struct camera_params p;
+	struct scene *s = grade_fixture_scene(course_scene, &p);
+	struct grade_rank ranks[GRADE_MAX_RANKS];
 	struct grade_job job;
 	struct camera cam;
 	struct diag d;
@@ -53,16 +54,8 @@ static void test_rank_exact_figures(void **state)
 	int exact_pairs = 0;
 
 	(void)state;
-	assert_int_equal(scene_add_view_floor(s, &d), 0);
-	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	camera_params_default(&p);
 	assert_int_equal(camera_init(&cam, &p, SIZE, &d), 0);
-	memset(&job, 0, sizeof(job));
-	job.scene = s;
-	job.camera = &cam;
-	job.settings.recursion = s->recursion;
-	job.settings.clamp = RT_CLAMP_LEVEL;
-	job.threads = 2;
+	grade_fixture_job(&job, s, &cam, s->recursion, 2);
 	for (m = 0; m < sizeof(made) / sizeof(made[0]); m++) {
 		struct image ref, tref, sub;
 		assert_int_equal(grade_render_reference(&job, &ref, &d), 0);
@@ -97,11 +90,4 @@ static void test_rank_exact_figures(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_rank_exact_figures),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_rank_exact_figures))

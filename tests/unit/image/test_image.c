@@ -105,24 +105,6 @@ static void make_image(struct image *img, int w, int h)
 		img->pixels[i] = (uint8_t)(i * 37 + 11);
 }
 
-static unsigned char *read_file(const char *path, size_t *len)
-{
-	FILE *f = fopen(path, "rb");
-	unsigned char *buf;
-	long n;
-
-	assert_non_null(f);
-	fseek(f, 0, SEEK_END);
-	n = ftell(f);
-	rewind(f);
-	buf = malloc((size_t)n + 1);
-	assert_non_null(buf);
-	assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
-	fclose(f);
-	*len = (size_t)n;
-	return buf;
-}
-
 static uint32_t le32(const unsigned char *p)
 {
 	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
@@ -280,7 +262,7 @@ static void write_and_check(const char *dir, enum image_format fmt, const char *
 	if (fmt == RT_FORMAT_PNG) {
 		check_png(path, &img);
 	} else {
-		buf = read_file(path, &len);
+		buf = support_read_file(path, &len);
 		if (fmt == RT_FORMAT_BMP)
 			check_bmp(buf, len, &img);
 		else
@@ -366,7 +348,7 @@ static void test_image_write_replaces_existing(void **state)
 	assert_int_equal(chmod(path, 0640), 0);
 	make_image(&img, 5, 3);
 	assert_int_equal(image_write(&img, path, RT_FORMAT_PPM, NULL, &d), 0);
-	buf = read_file(path, &len);
+	buf = support_read_file(path, &len);
 	check_ppm(buf, len, &img);
 	free(buf);
 	/* The old file's permissions are kept, and no temporary file remains. */
@@ -438,7 +420,7 @@ static void test_image_write_unknown_format_and_cancel(void **state)
 	fputs("old", f);
 	fclose(f);
 	assert_int_equal(image_write(&img, path, RT_FORMAT_PPM, &cancel, &d), -RT_E_INTERRUPTED);
-	buf = read_file(path, &len);
+	buf = support_read_file(path, &len);
 	assert_int_equal(len, 3);
 	assert_memory_equal(buf, "old", 3);
 	free(buf);
@@ -509,22 +491,14 @@ static void test_image_write_fifo_directly(void **state)
 	image_free(&img);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_image_alloc),
-		cmocka_unit_test(test_image_format_from_path),
-		cmocka_unit_test(test_image_format_table),
-		cmocka_unit_test_setup_teardown(test_image_png_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_bmp_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_ppm_round_trip, setup_dir, teardown_dir),
-		cmocka_unit_test(test_image_writers_to_streams),
-		cmocka_unit_test_setup_teardown(test_image_write_replaces_existing, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_new_file_mode, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_missing_directory, setup_dir, teardown_dir),
-		cmocka_unit_test_setup_teardown(test_image_write_unknown_format_and_cancel, setup_dir, teardown_dir),
-		cmocka_unit_test(test_image_write_dev_null),
-		cmocka_unit_test_setup_teardown(test_image_write_fifo_directly, setup_dir, teardown_dir),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_image_alloc, test_image_format_from_path,
+			   test_image_format_table),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_png_round_trip,
+				   test_image_bmp_round_trip, test_image_ppm_round_trip),
+	     SUPPORT_TESTS(test_image_writers_to_streams),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_write_replaces_existing,
+				   test_image_write_new_file_mode,
+				   test_image_write_missing_directory,
+				   test_image_write_unknown_format_and_cancel),
+	     SUPPORT_TESTS(test_image_write_dev_null),
+	     SUPPORT_FIXTURE_TESTS(setup_dir, teardown_dir, test_image_write_fifo_directly))

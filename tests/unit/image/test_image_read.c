@@ -120,14 +120,6 @@ static void test_image_read_refusals(void **state)
 	assert_int_equal(image_read_memory(buf, 0, "t", &img, NULL, &d), -RT_E_SYNTAX);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_image_read_bmp24_bottom_up_padded),
-		cmocka_unit_test(test_image_read_bmp32_and_top_down),
-		cmocka_unit_test(test_image_read_ppm),
-		cmocka_unit_test(test_image_read_refusals),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_image_read_bmp24_bottom_up_padded,
+			   test_image_read_bmp32_and_top_down, test_image_read_ppm,
+			   test_image_read_refusals))

@@ -232,12 +232,5 @@ static void test_png_check_data_and_size(void **state)
 	free(b);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_png_check_passes_what_libpng_writes),
-		cmocka_unit_test(test_png_check_refuses_cuts_and_damage),
-		cmocka_unit_test(test_png_check_data_and_size),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_png_check_passes_what_libpng_writes,
+			   test_png_check_refuses_cuts_and_damage, test_png_check_data_and_size))

@@ -258,15 +258,6 @@ static void test_png_deflate_best(void **state)
 	assert_ptr_equal(png_deflate_best(), png_deflate_best());
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_png_deflate_round_trip),
-		cmocka_unit_test(test_png_deflate_strips_independent),
-		cmocka_unit_test(test_png_deflate_addresses),
-		cmocka_unit_test(test_png_deflate_adler32),
-		cmocka_unit_test(test_png_deflate_best),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_png_deflate_round_trip, test_png_deflate_strips_independent,
+			   test_png_deflate_addresses, test_png_deflate_adler32,
+			   test_png_deflate_best))

@@ -117,7 +117,13 @@ static void test_png_idat_heights(void **state)
 	}
 }
 
-static void test_png_idat_out_of_memory(void **state)
+typedef int compress_fn(const struct image *img, struct png_idat *z, struct diag *d);
+
+/* compress made to fail at its first allocation, then its second, and so
+ * on until it succeeds: every failure reported as out of memory (without
+ * a leak: the sanitizer build finds those), and the stream it then makes
+ * the image's (20 x 150, fill_pixels with seed). */
+static void check_out_of_memory(compress_fn *compress, unsigned seed)
 {
 	struct image img;
 	struct png_idat z;
@@ -125,13 +131,12 @@ static void test_png_idat_out_of_memory(void **state)
 	unsigned long n;
 	int rc;
 
-	(void)state;
 	memset(&d, 0, sizeof(d));
 	assert_int_equal(image_alloc(&img, 20, 150, &d), 0);
-	fill_pixels(&img, 7);
+	fill_pixels(&img, seed);
 	for (n = 1;; n++) {
 		rt_alloc_fail_from(n);
-		rc = png_idat_compress(&img, &z, &d);
+		rc = compress(&img, &z, &d);
 		rt_alloc_fail_from(0);
 		if (rc == 0)
 			break;
@@ -141,6 +146,12 @@ static void test_png_idat_out_of_memory(void **state)
 	check_stream(&img, &z);
 	png_idat_free(&z);
 	image_free(&img);
+}
+
+static void test_png_idat_out_of_memory(void **state)
+{
+	(void)state;
+	check_out_of_memory(png_idat_compress, 7);
 }
 
 /* The bands of the image told in the order `order` (a permutation of
@@ -284,25 +295,6 @@ static void test_png_idat_strip_waits_for_band_above(void **state)
 	}
 }
 
-static unsigned char *slurp(const char *path, size_t *len)
-{
-	FILE *f = fopen(path, "rb");
-	unsigned char *buf;
-	long size;
-
-	assert_non_null(f);
-	assert_int_equal(fseek(f, 0, SEEK_END), 0);
-	size = ftell(f);
-	assert_true(size > 0);
-	rewind(f);
-	buf = malloc((size_t)size);
-	assert_non_null(buf);
-	assert_int_equal(fread(buf, 1, (size_t)size, f), (size_t)size);
-	fclose(f);
-	*len = (size_t)size;
-	return buf;
-}
-
 /* The public writer: the same file as image_write, told all bands, some
  * or none. */
 static void test_png_writer_same_file(void **state)
@@ -332,8 +324,9 @@ static void test_png_writer_same_file(void **state)
 			image_png_writer_band_done(w, k, 0);
 		assert_int_equal(image_png_writer_write(w, b, NULL, &d), 0);
 		image_png_writer_free(w);
-		fa = slurp(a, &la);
-		fb = slurp(b, &lb);
+		fa = support_read_file(a, &la);
+		fb = support_read_file(b, &lb);
+		assert_true(la > 0 && lb > 0);
 		assert_int_equal(la, lb);
 		assert_memory_equal(fa, fb, la);
 		free(fa);
@@ -346,55 +339,33 @@ static void test_png_writer_same_file(void **state)
 	image_free(&img);
 }
 
+/* The image in two bands (told 1 then 0) through the strips. */
+static int compress_in_bands(const struct image *img, struct png_idat *z, struct diag *d)
+{
+	struct png_idat_strips *st = NULL;
+	int rc = png_idat_strips_open(img, 2, &st, d);
+
+	if (rc != 0) {
+		assert_null(st);
+		return rc;
+	}
+	png_idat_strips_band_done(st, 1, 1);
+	png_idat_strips_band_done(st, 0, 0);
+	rc = png_idat_strips_finish(st, z, d);
+	png_idat_strips_free(st);
+	return rc;
+}
+
 /* Every allocation that fails, in the opening, in the strips compressed
  * band by band or in the finish, is reported as out of memory without a
  * leak (the sanitizer build finds those). */
 static void test_png_idat_bands_out_of_memory(void **state)
 {
-	struct image img;
-	struct png_idat z;
-	struct diag d;
-	unsigned long n;
-	int rc;
-
 	(void)state;
-	memset(&d, 0, sizeof(d));
-	assert_int_equal(image_alloc(&img, 20, 150, &d), 0);
-	fill_pixels(&img, 5);
-	for (n = 1;; n++) {
-		struct png_idat_strips *st = NULL;
-
-		rt_alloc_fail_from(n);
-		rc = png_idat_strips_open(&img, 2, &st, &d);
-		if (rc == 0) {
-			png_idat_strips_band_done(st, 1, 1);
-			png_idat_strips_band_done(st, 0, 0);
-			rc = png_idat_strips_finish(st, &z, &d);
-			png_idat_strips_free(st);
-		} else {
-			assert_null(st);
-		}
-		rt_alloc_fail_from(0);
-		if (rc == 0)
-			break;
-		assert_int_equal(rc, -RT_E_NOMEM);
-	}
-	assert_true(n > 1);
-	check_stream(&img, &z);
-	png_idat_free(&z);
-	image_free(&img);
+	check_out_of_memory(compress_in_bands, 5);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_png_idat_heights),
-		cmocka_unit_test(test_png_idat_out_of_memory),
-		cmocka_unit_test(test_png_idat_bands_same_stream),
-		cmocka_unit_test(test_png_idat_strip_waits_for_band_above),
-		cmocka_unit_test(test_png_writer_same_file),
-		cmocka_unit_test(test_png_idat_bands_out_of_memory),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_png_idat_heights, test_png_idat_out_of_memory,
+			   test_png_idat_bands_same_stream,
+			   test_png_idat_strip_waits_for_band_above, test_png_writer_same_file,
+			   test_png_idat_bands_out_of_memory))

@@ -142,18 +142,6 @@ static void test_image_read_errors(void **state)
 	expect_error("cut.bmp", -RT_E_SYNTAX, "truncated BMP");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_image_read_bmp_bottom_up),
-		cmocka_unit_test(test_image_read_round_trip),
-		cmocka_unit_test(test_image_read_errors),
-	};
-	int rc;
-
-	if (make_dir(NULL) != 0)
-		return 1;
-	rc = SUPPORT_RUN(tests, argc, argv);
-	remove_dir(NULL);
-	return rc;
-}
+SUPPORT_MAIN_AROUND(make_dir, remove_dir,
+		    SUPPORT_TESTS(test_image_read_bmp_bottom_up, test_image_read_round_trip,
+				  test_image_read_errors))

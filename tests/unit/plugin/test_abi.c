@@ -186,13 +186,5 @@ static void test_abi_neighbour_versions_refused(void **state)
 	}
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_abi_layout_is_pinned),
-		cmocka_unit_test(test_abi_host_is_this_version),
-		cmocka_unit_test(test_abi_neighbour_versions_refused),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_abi_layout_is_pinned, test_abi_host_is_this_version,
+			   test_abi_neighbour_versions_refused))

@@ -216,25 +216,6 @@ static void test_loader_dirs(void **state)
 }
 
 /* The whole of a file into a new buffer of its size. */
-static unsigned char *slurp(const char *path, size_t *len)
-{
-	FILE *f = fopen(path, "rb");
-	unsigned char *buf;
-	long n;
-
-	assert_non_null(f);
-	assert_int_equal(fseek(f, 0, SEEK_END), 0);
-	n = ftell(f);
-	assert_true(n > 64);
-	rewind(f);
-	buf = malloc((size_t)n);
-	assert_non_null(buf);
-	assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
-	fclose(f);
-	*len = (size_t)n;
-	return buf;
-}
-
 /* plugin_elf_check on a good plugin and on its damaged copies: cut short
  * at every length up to its end (an interrupted copy, which dlopen maps
  * and dies of), another processor's, another class's, not a shared
@@ -242,11 +223,12 @@ static unsigned char *slurp(const char *path, size_t *len)
 static void test_loader_elf_checks(void **state)
 {
 	size_t len, cut;
-	unsigned char *good = slurp(TORUS, &len), *bad;
+	unsigned char *good = support_read_file(TORUS, &len), *bad;
 	struct diag d;
 	int refused = 0;
 
 	(void)state;
+	assert_true(len > 64);
 	assert_int_equal(plugin_elf_check("t.so", good, len, &d), 0);
 	for (cut = 0; cut < len; cut += cut < 4096 ? 1 : 997) {
 		if (plugin_elf_check("t.so", good, cut, &d) < 0)
@@ -283,17 +265,6 @@ static void test_loader_elf_checks(void **state)
 	free(good);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_loader_failures),
-		cmocka_unit_test(test_loader_failure_after_good),
-		cmocka_unit_test(test_loader_register_outside_init),
-		cmocka_unit_test(test_loader_records),
-		cmocka_unit_test(test_loader_dirs),
-		cmocka_unit_test(test_loader_dirs_yield),
-		cmocka_unit_test(test_loader_elf_checks),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_loader_failures, test_loader_failure_after_good,
+			   test_loader_register_outside_init, test_loader_records,
+			   test_loader_dirs, test_loader_dirs_yield, test_loader_elf_checks))

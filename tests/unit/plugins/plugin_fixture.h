@@ -32,6 +32,16 @@ static int fixture_unload(void **state)
 	return 0;
 }
 
+/* The program's main (SUPPORT_MAIN_AROUND): loads the plugin `name` before
+ * the tests, a failure to load failing the program, and unloads it after. */
+#define FIXTURE_MAIN(name, ...) \
+	static int fixture_load_group(void **state) \
+	{ \
+		(void)state; \
+		return fixture_load(name); \
+	} \
+	SUPPORT_MAIN_AROUND(fixture_load_group, fixture_unload, __VA_ARGS__)
+
 /* A classic scene of the one object `object` (keyword to shininess) and
  * no light; *state is the scene, its only shape the one tested. */
 static struct scene *fixture_scene(const char *object)

@@ -120,20 +120,9 @@ static void test_cylinder_export_pov(void **state)
 	free(text);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_cylinder_side_and_caps, setup_upright, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_cylinder_tangent, setup_upright, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_cylinder_non_unit_and_t_max, setup_upright,
-						fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_cylinder_normals, setup_upright, fixture_destroy),
-		cmocka_unit_test(test_cylinder_slanted_bounds),
-		cmocka_unit_test(test_cylinder_parse_errors),
-		cmocka_unit_test_setup_teardown(test_cylinder_export_pov, setup_upright, fixture_destroy),
-	};
-
-	if (fixture_load("cylinder") < 0)
-		return 1;
-	return SUPPORT_RUN(tests, argc, argv) | fixture_unload(NULL);
-}
+FIXTURE_MAIN("cylinder",
+	     SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy, test_cylinder_side_and_caps,
+				   test_cylinder_tangent, test_cylinder_non_unit_and_t_max,
+				   test_cylinder_normals),
+	     SUPPORT_TESTS(test_cylinder_slanted_bounds, test_cylinder_parse_errors),
+	     SUPPORT_FIXTURE_TESTS(setup_upright, fixture_destroy, test_cylinder_export_pov))

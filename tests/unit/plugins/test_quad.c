@@ -111,20 +111,10 @@ static void test_quad_export_pov(void **state)
 	free(text);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_quad_hits_both_triangles_from_both_sides, setup_square,
-						fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_quad_non_unit_direction_and_t_max, setup_square,
-						fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_quad_normal_and_bounds, setup_square, fixture_destroy),
-		cmocka_unit_test(test_quad_degenerate_and_non_planar),
-		cmocka_unit_test(test_quad_parse_errors),
-		cmocka_unit_test_setup_teardown(test_quad_export_pov, setup_square, fixture_destroy),
-	};
-
-	if (fixture_load("quad") < 0)
-		return 1;
-	return SUPPORT_RUN(tests, argc, argv) | fixture_unload(NULL);
-}
+FIXTURE_MAIN("quad",
+	     SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy,
+				   test_quad_hits_both_triangles_from_both_sides,
+				   test_quad_non_unit_direction_and_t_max,
+				   test_quad_normal_and_bounds),
+	     SUPPORT_TESTS(test_quad_degenerate_and_non_planar, test_quad_parse_errors),
+	     SUPPORT_FIXTURE_TESTS(setup_square, fixture_destroy, test_quad_export_pov))

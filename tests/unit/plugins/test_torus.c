@@ -12,12 +12,6 @@
  * |z| <= 1. */
 #define TORUS_Z "torus\n0 0 0\n0 0 5\n3 1\n1 0 0\n0.2 0.5 0.3 0\n10"
 
-static int setup_group(void **state)
-{
-	(void)state;
-	return fixture_load("torus");
-}
-
 static int setup_z(void **state)
 {
 	*state = fixture_scene(TORUS_Z);
@@ -265,24 +259,13 @@ static void test_torus_export_pov(void **state)
 	free(text);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_torus_hits_along_a_diameter, setup_z, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_non_unit_direction, setup_z, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_grazing_the_top, setup_z, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_t_max_shrinks, setup_z, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_normals, setup_z, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_tilted_axis, setup_tilted, fixture_destroy),
-		cmocka_unit_test_setup_teardown(test_torus_grazing_rays_agree_with_the_geometry,
-						setup_tilted_random, fixture_destroy),
-		cmocka_unit_test(test_torus_parse_errors),
-		cmocka_unit_test(test_torus_tiny_and_huge_axes),
-		cmocka_unit_test(test_torus_tiny_minor_radius),
-		cmocka_unit_test_setup_teardown(test_torus_export_pov, setup_z, fixture_destroy),
-	};
-
-	if (setup_group(NULL) < 0)
-		return 1;
-	return SUPPORT_RUN(tests, argc, argv) | fixture_unload(NULL);
-}
+FIXTURE_MAIN("torus",
+	     SUPPORT_FIXTURE_TESTS(setup_z, fixture_destroy, test_torus_hits_along_a_diameter,
+				   test_torus_non_unit_direction, test_torus_grazing_the_top,
+				   test_torus_t_max_shrinks, test_torus_normals),
+	     SUPPORT_FIXTURE_TESTS(setup_tilted, fixture_destroy, test_torus_tilted_axis),
+	     SUPPORT_FIXTURE_TESTS(setup_tilted_random, fixture_destroy,
+				   test_torus_grazing_rays_agree_with_the_geometry),
+	     SUPPORT_TESTS(test_torus_parse_errors, test_torus_tiny_and_huge_axes,
+			   test_torus_tiny_minor_radius),
+	     SUPPORT_FIXTURE_TESTS(setup_z, fixture_destroy, test_torus_export_pov))

@@ -140,16 +140,6 @@ static void test_torus_roots_lower_degrees(void **state)
 	assert_int_equal(torus_roots(line, 1, 0.5, 5, r), 0);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_torus_roots_four_simple),
-		cmocka_unit_test(test_torus_roots_double),
-		cmocka_unit_test(test_torus_roots_triple),
-		cmocka_unit_test(test_torus_roots_grazing),
-		cmocka_unit_test(test_torus_roots_at_the_ends),
-		cmocka_unit_test(test_torus_roots_lower_degrees),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_torus_roots_four_simple, test_torus_roots_double,
+			   test_torus_roots_triple, test_torus_roots_grazing,
+			   test_torus_roots_at_the_ends, test_torus_roots_lower_degrees))

@@ -451,22 +451,11 @@ static void test_camera_span_is_camera_ray(void **state)
 	}
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_camera_defaults),
-		cmocka_unit_test(test_camera_centre_pixel_looks_at_look_point),
-		cmocka_unit_test(test_camera_basis),
-		cmocka_unit_test(test_camera_up_is_up_right_is_right),
-		cmocka_unit_test(test_camera_field_of_view),
-		cmocka_unit_test(test_camera_size_one),
-		cmocka_unit_test(test_camera_custom_view),
-		cmocka_unit_test(test_camera_errors),
-		cmocka_unit_test(test_camera_nearfar_fovx_180_refused),
-		cmocka_unit_test(test_camera_nearfar_rays_by_hand),
-		cmocka_unit_test(test_camera_nearfar_plane),
-		cmocka_unit_test(test_camera_classic_unchanged),
-		SUPPORT_ISA_TESTS(test_camera_span_is_camera_ray),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_camera_defaults, test_camera_centre_pixel_looks_at_look_point,
+			   test_camera_basis, test_camera_up_is_up_right_is_right,
+			   test_camera_field_of_view, test_camera_size_one,
+			   test_camera_custom_view, test_camera_errors,
+			   test_camera_nearfar_fovx_180_refused,
+			   test_camera_nearfar_rays_by_hand, test_camera_nearfar_plane,
+			   test_camera_classic_unchanged),
+	     SUPPORT_ISA_TESTS(test_camera_span_is_camera_ray))

@@ -226,17 +226,9 @@ static void test_explain_outside_the_image(void **state)
 	scene_destroy(l.s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_explain_value_is_the_pixel_classic),
-		cmocka_unit_test(test_explain_value_is_the_pixel_spot),
-		cmocka_unit_test(test_explain_value_is_the_pixel_pyramid),
-		cmocka_unit_test(test_explain_value_is_the_pixel_nearfar),
-		cmocka_unit_test(test_explain_value_is_the_pixel_options),
-		cmocka_unit_test(test_explain_tree_records),
-		cmocka_unit_test(test_explain_outside_the_image),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_explain_value_is_the_pixel_classic,
+			   test_explain_value_is_the_pixel_spot,
+			   test_explain_value_is_the_pixel_pyramid,
+			   test_explain_value_is_the_pixel_nearfar,
+			   test_explain_value_is_the_pixel_options, test_explain_tree_records,
+			   test_explain_outside_the_image))

@@ -23,21 +23,30 @@
 /* A material that adds nothing of its own: the glass's light is all kt's. */
 #define CLEAR "1 1 1  0 0 0 0  1  "
 
-static struct color trace_glass(const char *text, double ior, double kt, int recursion,
-				struct ray r)
+/* The colour r sees in s, prepared here on one thread, clamped at the end
+ * (RT_CLAMP_FINAL); s is destroyed. */
+static struct color trace_prepared(struct scene *s, int recursion, struct ray r)
 {
-	struct scene *s = support_parse(text);
 	struct render_settings rs;
 	struct diag d;
 	struct color c;
 
-	assert_int_equal(scene_set_glass(s, 0, ior, kt, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
 	rs.recursion = recursion;
 	rs.clamp = RT_CLAMP_FINAL;
 	c = render_trace(s, &rs, &r, 1, NULL);
 	scene_destroy(s);
 	return c;
+}
+
+static struct color trace_glass(const char *text, double ior, double kt, int recursion,
+				struct ray r)
+{
+	struct scene *s = support_parse(text);
+	struct diag d;
+
+	assert_int_equal(scene_set_glass(s, 0, ior, kt, &d), 0);
+	return trace_prepared(s, recursion, r);
 }
 
 static void test_glass_through_the_centre(void **state)
@@ -239,10 +248,8 @@ static struct color trace_bubble(double n_in, int recursion)
 {
 	struct vec3 q = bubble_reflected_point();
 	struct ray r = support_ray(1.35, 0, -20, 0, 0, 1);
-	struct render_settings rs;
 	struct scene *s;
 	struct diag d;
-	struct color c;
 	char text[512];
 
 	snprintf(text, sizeof(text), "9 1 3 sphere 0 0 0 10 " CLEAR "sphere 0 0 0 1 1 1 1  0 0 0 0.3 1 "
@@ -250,12 +257,7 @@ static struct color trace_bubble(double n_in, int recursion)
 	s = support_parse(text);
 	assert_int_equal(scene_set_glass(s, 0, 1.5, 0.5, &d), 0);
 	assert_int_equal(scene_set_glass(s, 1, n_in, 0.5, &d), 0);
-	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	rs.recursion = recursion;
-	rs.clamp = RT_CLAMP_FINAL;
-	c = render_trace(s, &rs, &r, 1, NULL);
-	scene_destroy(s);
-	return c;
+	return trace_prepared(s, recursion, r);
 }
 
 static void test_glass_total_internal_reflection(void **state)
@@ -331,17 +333,9 @@ static void test_glass_file_objects_are_opaque(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_glass_through_the_centre),
-		cmocka_unit_test(test_glass_bends_by_snell),
-		cmocka_unit_test(test_glass_nested_bends_between_the_glasses),
-		cmocka_unit_test(test_glass_negated_quadric_is_the_same_glass),
-		cmocka_unit_test(test_glass_total_internal_reflection),
-		cmocka_unit_test(test_glass_casts_an_opaque_shadow),
-		cmocka_unit_test(test_glass_set_checks),
-		cmocka_unit_test(test_glass_file_objects_are_opaque),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_glass_through_the_centre, test_glass_bends_by_snell,
+			   test_glass_nested_bends_between_the_glasses,
+			   test_glass_negated_quadric_is_the_same_glass,
+			   test_glass_total_internal_reflection,
+			   test_glass_casts_an_opaque_shadow, test_glass_set_checks,
+			   test_glass_file_objects_are_opaque))

@@ -21,6 +21,7 @@
 #include "render/hit_lanes.h"
 #include "render/shade_math.h"
 #include "shapes/shapes.h"
+#include "render_fixture.h"
 #include "support.h"
 #include "whitted/image.h"
 
@@ -187,12 +188,11 @@ static void check_rays(const struct hit_lanes_set *set, const char *name)
  * lacks it. */
 static void test_hit_lanes_sets(void **state)
 {
-	enum rt_simd isa = SUPPORT_ISA_OF(state);
-	const struct render_kernels *k = render_kernels_of(isa);
+	const struct render_kernels *k = render_fixture_kernels(state);
+	const char *tag = support_isa_tag(SUPPORT_ISA_OF(state));
 
-	support_need_isa(isa, k != NULL);
-	check_set(&k->hit, support_isa_tag(isa));
-	check_rays(&k->hit, support_isa_tag(isa));
+	check_set(&k->hit, tag);
+	check_rays(&k->hit, tag);
 }
 
 #define N_SHAPES 7
@@ -306,12 +306,5 @@ static void test_hit_lanes_fill(void **state)
 		shape_destroy(shapes[m]);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_hit_lanes_sets),
-		cmocka_unit_test(test_hit_lanes_fill),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_hit_lanes_sets),
+	     SUPPORT_TESTS(test_hit_lanes_fill))

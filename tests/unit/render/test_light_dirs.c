@@ -12,6 +12,7 @@
 #include "base/simd.h"
 #include "render/render_kernels.h"
 #include "render/light_dirs.h"
+#include "render_fixture.h"
 #include "support.h"
 
 static bool same(double a, double b)
@@ -83,11 +84,9 @@ static void check_set(light_dirs_fn *set, const char *name)
  * lacks it), and the one chosen at run time. */
 static void test_light_dirs_set(void **state)
 {
-	enum rt_simd isa = SUPPORT_ISA_OF(state);
-	const struct render_kernels *k = render_kernels_of(isa);
+	const struct render_kernels *k = render_fixture_kernels(state);
 
-	support_need_isa(isa, k != NULL);
-	check_set(k->light_dirs, support_isa_tag(isa));
+	check_set(k->light_dirs, support_isa_tag(SUPPORT_ISA_OF(state)));
 }
 
 static void test_light_dirs_chosen_set(void **state)
@@ -96,11 +95,5 @@ static void test_light_dirs_chosen_set(void **state)
 	check_set(light_dirs, "chosen");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_light_dirs_set),
-		cmocka_unit_test(test_light_dirs_chosen_set),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_light_dirs_set),
+	     SUPPORT_TESTS(test_light_dirs_chosen_set))

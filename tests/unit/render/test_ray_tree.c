@@ -267,15 +267,8 @@ static void test_ray_tree_cancel_stops_a_pixel(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_ray_tree_images_are_the_whole_trees),
-		cmocka_unit_test(test_ray_tree_coarse_cut_is_checked),
-		cmocka_unit_test(test_ray_tree_glass_sphere_at_256),
-		cmocka_unit_test(test_ray_tree_budget_fails_the_render),
-		cmocka_unit_test(test_ray_tree_budget_counts_rays),
-		cmocka_unit_test(test_ray_tree_cancel_stops_a_pixel),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_ray_tree_images_are_the_whole_trees,
+			   test_ray_tree_coarse_cut_is_checked,
+			   test_ray_tree_glass_sphere_at_256,
+			   test_ray_tree_budget_fails_the_render,
+			   test_ray_tree_budget_counts_rays, test_ray_tree_cancel_stops_a_pixel))

@@ -11,6 +11,7 @@
 #include "course_scene.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
+#include "render_fixture.h"
 #include "support.h"
 
 static struct ray ray_make(double ox, double oy, double oz, double dx, double dy, double dz)
@@ -677,15 +678,9 @@ static void render_region(const struct scene *s, const struct camera *cam, int t
 			  struct ray_counts *counts)
 {
 	struct render_job job;
-	struct diag d;
 
 	render_job_init(&job, s, cam, threads);
-	job.x0 = x0;
-	job.y0 = y0;
-	job.x1 = x1;
-	job.y1 = y1;
-	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
-	assert_int_equal(render_image(&job, img, counts, &d), 0);
+	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 }
 
 /* At 99 pixels the last blocks of 16 are cut to 3 pixels on both axes. */
@@ -713,9 +708,7 @@ static void test_render_threads_bit_identical(void **state)
 	for (i = 0; i < sizeof(threads) / sizeof(threads[0]); i++) {
 		render_region(s, &cam, threads[i], 0, 0, 99, 99, &other, &n);
 		assert_memory_equal(one.pixels, other.pixels, 99 * 99 * 3);
-		assert_int_equal(n.primary, n1.primary);
-		assert_int_equal(n.shadow, n1.shadow);
-		assert_int_equal(n.reflection, n1.reflection);
+		assert_same_ray_counts(n, n1);
 		image_free(&other);
 	}
 	image_free(&one);
@@ -1160,45 +1153,27 @@ static void test_render_near_plane_hides_near_objects(void **state)
 	scene_destroy(b);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_render_background_is_black),
-		cmocka_unit_test(test_render_ambient_only),
-		cmocka_unit_test(test_render_diffuse_head_on),
-		cmocka_unit_test(test_render_specular_is_tinted),
-		cmocka_unit_test(test_render_diffuse_and_specular_at_an_angle),
-		cmocka_unit_test(test_render_coloured_light),
-		cmocka_unit_test(test_render_lights_add_up),
-		cmocka_unit_test(test_render_lights_past_the_first_batch),
-		cmocka_unit_test(test_render_only_the_last_light_lights),
-		cmocka_unit_test(test_render_plane_lit),
-		cmocka_unit_test(test_render_shadowed_point),
-		cmocka_unit_test(test_render_blocker_beyond_light),
-		cmocka_unit_test(test_render_light_behind_open_surface),
-		cmocka_unit_test(test_render_highlight_needs_positive_r_dot_l),
-		cmocka_unit_test(test_render_one_reflection_bounce),
-		cmocka_unit_test(test_render_reflection_level_argument),
-		cmocka_unit_test(test_render_clamp_level_versus_final),
-		cmocka_unit_test(test_render_no_shadow_acne),
-		cmocka_unit_test(test_render_no_acne_on_floor_and_triangle),
-		cmocka_unit_test(test_render_no_light_leaks),
-		cmocka_unit_test(test_render_no_acne_far_up_the_z_axis),
-		cmocka_unit_test(test_render_far_eye_shadow_and_reflection),
-		cmocka_unit_test(test_render_color_to_rgb8),
-		cmocka_unit_test(test_render_ray_counts),
-		cmocka_unit_test(test_render_threads_bit_identical),
-		cmocka_unit_test(test_render_region_matches_full_image),
-		cmocka_unit_test(test_render_bands_told_when_final),
-		cmocka_unit_test(test_render_pixel_matches_trace),
-		cmocka_unit_test(test_render_errors_and_cancel),
-		cmocka_unit_test(test_render_spot_cone_hard_edge),
-		cmocka_unit_test(test_render_spot_right_angle_and_180),
-		cmocka_unit_test(test_render_spot_shadowed),
-		cmocka_unit_test(test_render_falloff_scales_diffuse_and_specular),
-		cmocka_unit_test(test_render_point_then_spot_add_up),
-		cmocka_unit_test(test_render_full_path_matches_classic),
-		cmocka_unit_test(test_render_near_plane_hides_near_objects),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_render_background_is_black, test_render_ambient_only,
+			   test_render_diffuse_head_on, test_render_specular_is_tinted,
+			   test_render_diffuse_and_specular_at_an_angle,
+			   test_render_coloured_light, test_render_lights_add_up,
+			   test_render_lights_past_the_first_batch,
+			   test_render_only_the_last_light_lights, test_render_plane_lit,
+			   test_render_shadowed_point, test_render_blocker_beyond_light,
+			   test_render_light_behind_open_surface,
+			   test_render_highlight_needs_positive_r_dot_l,
+			   test_render_one_reflection_bounce,
+			   test_render_reflection_level_argument,
+			   test_render_clamp_level_versus_final, test_render_no_shadow_acne,
+			   test_render_no_acne_on_floor_and_triangle,
+			   test_render_no_light_leaks, test_render_no_acne_far_up_the_z_axis,
+			   test_render_far_eye_shadow_and_reflection, test_render_color_to_rgb8,
+			   test_render_ray_counts, test_render_threads_bit_identical,
+			   test_render_region_matches_full_image,
+			   test_render_bands_told_when_final, test_render_pixel_matches_trace,
+			   test_render_errors_and_cancel, test_render_spot_cone_hard_edge,
+			   test_render_spot_right_angle_and_180, test_render_spot_shadowed,
+			   test_render_falloff_scales_diffuse_and_specular,
+			   test_render_point_then_spot_add_up,
+			   test_render_full_path_matches_classic,
+			   test_render_near_plane_hides_near_objects))

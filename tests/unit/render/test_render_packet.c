@@ -11,6 +11,7 @@
 #include "accel/accel.h"
 #include "accel/accel_tree.h"
 #include "course_scene.h"
+#include "render_fixture.h"
 #include "support.h"
 #include "whitted/camera.h"
 #include "whitted/image.h"
@@ -99,12 +100,7 @@ static void render_with(const struct scene *s, const char *packets, int threads,
 	camera_params_default(&cp);
 	assert_int_equal(camera_init(&cam, &cp, 90, &d), 0);
 	render_job_init(&job, s, &cam, threads);
-	job.x0 = x0;
-	job.y0 = y0;
-	job.x1 = x1;
-	job.y1 = y1;
-	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
-	assert_int_equal(render_image(&job, img, counts, &d), 0);
+	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 	assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
 }
 
@@ -128,9 +124,7 @@ static void check_same(bool special, bool glass, bool in_plane)
 		for (j = 0; j < sizeof(threads) / sizeof(threads[0]); j++) {
 			render_with(s, modes[i], threads[j], 3, 6, 87, 79, &other, &n);
 			assert_memory_equal(one.pixels, other.pixels, bytes);
-			assert_int_equal(n.primary, n1.primary);
-			assert_int_equal(n.shadow, n1.shadow);
-			assert_int_equal(n.reflection, n1.reflection);
+			assert_same_ray_counts(n, n1);
 			image_free(&other);
 		}
 	image_free(&one);
@@ -177,9 +171,7 @@ static void test_render_packet_light_in_a_surface_plane(void **state)
 	render_with(s, "0", 1, 0, 0, 90, 90, &one, &n1);
 	render_with(s, "1", 2, 0, 0, 90, 90, &other, &n);
 	assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
-	assert_int_equal(n.primary, n1.primary);
-	assert_int_equal(n.shadow, n1.shadow);
-	assert_int_equal(n.reflection, n1.reflection);
+	assert_same_ray_counts(n, n1);
 	image_free(&one);
 	image_free(&other);
 	scene_destroy(s);
@@ -267,9 +259,7 @@ static void check_small_tree(int extra, bool spot)
 		assert_int_equal(accel_packets_scatter_pay(s->accel), lanes[k] != RT_SIMD_BASE);
 		render_with(s, "1", k == 1 ? 3 : 1, 0, 0, 90, 90, &other, &n);
 		assert_memory_equal(one.pixels, other.pixels, (size_t)90 * 90 * 3);
-		assert_int_equal(n.primary, n1.primary);
-		assert_int_equal(n.shadow, n1.shadow);
-		assert_int_equal(n.reflection, n1.reflection);
+		assert_same_ray_counts(n, n1);
 		assert_int_equal(n.refraction, n1.refraction);
 		image_free(&other);
 		tested++;
@@ -292,16 +282,10 @@ static void test_render_packet_small_tree_many_lights_and_a_spot(void **state)
 	check_small_tree(0, true);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_render_packet_classic_lights_same_image),
-		cmocka_unit_test(test_render_packet_spot_and_falloff_same_image),
-		cmocka_unit_test(test_render_packet_glass_same_image),
-		cmocka_unit_test(test_render_packet_light_in_a_surface_plane),
-		cmocka_unit_test(test_render_packet_forced_on_a_small_tree),
-		cmocka_unit_test(test_render_packet_small_tree_reflections),
-		cmocka_unit_test(test_render_packet_small_tree_many_lights_and_a_spot),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_render_packet_classic_lights_same_image,
+			   test_render_packet_spot_and_falloff_same_image,
+			   test_render_packet_glass_same_image,
+			   test_render_packet_light_in_a_surface_plane,
+			   test_render_packet_forced_on_a_small_tree,
+			   test_render_packet_small_tree_reflections,
+			   test_render_packet_small_tree_many_lights_and_a_spot))

@@ -13,6 +13,7 @@
 #include "course_scene.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
+#include "render_fixture.h"
 #include "support.h"
 
 static struct scene *course(void)
@@ -30,17 +31,11 @@ static void render(const struct scene *s, const struct camera *cam, int samples,
 		   struct ray_counts *counts)
 {
 	struct render_job job;
-	struct diag d;
 
 	render_job_init(&job, s, cam, threads);
 	job.samples = samples;
 	job.settings.clamp = clamp;
-	job.x0 = x0;
-	job.y0 = y0;
-	job.x1 = x1;
-	job.y1 = y1;
-	assert_int_equal(image_alloc(img, x1 - x0, y1 - y0, &d), 0);
-	assert_int_equal(render_image(&job, img, counts, &d), 0);
+	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 }
 
 static void test_samples_pixel_is_the_clamped_mean(void **state)
@@ -191,14 +186,7 @@ static void test_samples_packets_same_as_single_rays(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_samples_pixel_is_the_clamped_mean),
-		cmocka_unit_test(test_samples_are_the_big_image_centres),
-		cmocka_unit_test(test_samples_one_is_the_default),
-		cmocka_unit_test(test_samples_threads_and_regions),
-		cmocka_unit_test(test_samples_packets_same_as_single_rays),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_samples_pixel_is_the_clamped_mean,
+			   test_samples_are_the_big_image_centres,
+			   test_samples_one_is_the_default, test_samples_threads_and_regions,
+			   test_samples_packets_same_as_single_rays))

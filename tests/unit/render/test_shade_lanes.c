@@ -16,6 +16,7 @@
 #include "render/shade_hit.h"
 #include "render/shade_lanes.h"
 #include "scene/scene_impl.h"
+#include "render_fixture.h"
 #include "support.h"
 #include "whitted/render.h"
 
@@ -172,11 +173,9 @@ static void check_set(shade_lanes_fn *set, const char *name)
  * lacks it), and the one chosen at run time. */
 static void test_shade_lanes_set(void **state)
 {
-	enum rt_simd isa = SUPPORT_ISA_OF(state);
-	const struct render_kernels *k = render_kernels_of(isa);
+	const struct render_kernels *k = render_fixture_kernels(state);
 
-	support_need_isa(isa, k != NULL);
-	check_set(k->shade_lanes, support_isa_tag(isa));
+	check_set(k->shade_lanes, support_isa_tag(SUPPORT_ISA_OF(state)));
 }
 
 static void test_shade_lanes_chosen_set(void **state)
@@ -185,11 +184,5 @@ static void test_shade_lanes_chosen_set(void **state)
 	check_set(shade_lanes, "chosen");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_shade_lanes_set),
-		cmocka_unit_test(test_shade_lanes_chosen_set),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_shade_lanes_set),
+	     SUPPORT_TESTS(test_shade_lanes_chosen_set))

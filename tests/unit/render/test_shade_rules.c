@@ -307,19 +307,9 @@ static void test_shade_rules_spot_cone(void **state)
 	assert_spot_lit(t, RT_RULE_SPOT_COS_DEGREES, true);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_shade_rules_none_is_render_trace),
-		cmocka_unit_test(test_shade_rules_none_is_render_trace_glass_texture),
-		cmocka_unit_test(test_shade_rules_white_specular),
-		cmocka_unit_test(test_shade_rules_no_shadows),
-		cmocka_unit_test(test_shade_rules_unit_starts),
-		cmocka_unit_test(test_shade_rules_light_behind),
-		cmocka_unit_test(test_shade_rules_never_clamp),
-		cmocka_unit_test(test_shade_rules_floor_swapped),
-		cmocka_unit_test(test_shade_rules_spot_cone),
-	};
-
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_shade_rules_none_is_render_trace,
+			   test_shade_rules_none_is_render_trace_glass_texture,
+			   test_shade_rules_white_specular, test_shade_rules_no_shadows,
+			   test_shade_rules_unit_starts, test_shade_rules_light_behind,
+			   test_shade_rules_never_clamp, test_shade_rules_floor_swapped,
+			   test_shade_rules_spot_cone))

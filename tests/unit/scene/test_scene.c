@@ -307,18 +307,8 @@ static void test_scene_view_floor_is_classic_floor(void **state)
 	scene_destroy(b);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_scene_dialect_names),
-		cmocka_unit_test(test_scene_lights_in_order),
-		cmocka_unit_test(test_scene_light_full_completes),
-		cmocka_unit_test(test_scene_light_full_range),
-		cmocka_unit_test(test_scene_special_lights_counted),
-		cmocka_unit_test(test_scene_view_default),
-		cmocka_unit_test(test_scene_set_view),
-		cmocka_unit_test(test_scene_add_view_floor),
-		cmocka_unit_test(test_scene_view_floor_is_classic_floor),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_scene_dialect_names, test_scene_lights_in_order,
+			   test_scene_light_full_completes, test_scene_light_full_range,
+			   test_scene_special_lights_counted, test_scene_view_default,
+			   test_scene_set_view, test_scene_add_view_floor,
+			   test_scene_view_floor_is_classic_floor))

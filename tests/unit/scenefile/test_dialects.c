@@ -225,15 +225,6 @@ static void test_dialects_notes(void **state)
 	expect_error("\xef\xbb\xbf" "x", RT_DIALECT_AUTO, 1, 1, "expected an integer (recursion level)");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_dialects_detection_order),
-		cmocka_unit_test(test_dialects_views),
-		cmocka_unit_test(test_dialects_nearfar_lights),
-		cmocka_unit_test(test_dialects_forced),
-		cmocka_unit_test(test_dialects_errors),
-		cmocka_unit_test(test_dialects_notes),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_dialects_detection_order, test_dialects_views,
+			   test_dialects_nearfar_lights, test_dialects_forced,
+			   test_dialects_errors, test_dialects_notes))

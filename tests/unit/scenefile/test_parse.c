@@ -828,39 +828,20 @@ static void test_parse_real_nazmultakbir(void **state)
 	check_real_error("nazmultakbir.txt", 10, 9, "expected an object keyword");
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_parse_course_example),
-		cmocka_unit_test(test_parse_annotated_comments),
-		cmocka_unit_test(test_parse_lights_with_colours),
-		cmocka_unit_test(test_parse_lights_positions_only),
-		cmocka_unit_test(test_parse_trailing_text_one_note),
-		cmocka_unit_test(test_parse_zero_objects_zero_lights_size_one),
-		cmocka_unit_test(test_parse_crlf),
-		cmocka_unit_test(test_parse_integral_reals_and_extremes),
-		cmocka_unit_test(test_parse_degenerate_triangle_one_note),
-		cmocka_unit_test(test_parse_many_notes_are_capped),
-		cmocka_unit_test(test_parse_error_settings),
-		cmocka_unit_test(test_parse_error_huge_integers),
-		cmocka_unit_test(test_parse_error_not_finite),
-		cmocka_unit_test(test_parse_error_token_too_long),
-		cmocka_unit_test(test_parse_error_unknown_keyword),
-		cmocka_unit_test(test_parse_error_expected_found),
-		cmocka_unit_test(test_parse_error_ranges),
-		cmocka_unit_test(test_parse_error_quadric),
-		cmocka_unit_test(test_parse_error_object_count_mismatch),
-		cmocka_unit_test(test_parse_error_light_count_mismatch),
-		cmocka_unit_test(test_parse_huge_counts_fail_fast),
-		cmocka_unit_test(test_parse_load_missing_file),
-		cmocka_unit_test(test_parse_test_scene),
-		cmocka_unit_test(test_parse_real_anachor),
-		cmocka_unit_test(test_parse_real_pistachio102),
-		cmocka_unit_test(test_parse_real_adibashaira),
-		cmocka_unit_test(test_parse_real_ajakil),
-		cmocka_unit_test(test_parse_real_mdraihansobhan),
-		cmocka_unit_test(test_parse_real_apurbostarry),
-		cmocka_unit_test(test_parse_real_nazmultakbir),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_parse_course_example, test_parse_annotated_comments,
+			   test_parse_lights_with_colours, test_parse_lights_positions_only,
+			   test_parse_trailing_text_one_note,
+			   test_parse_zero_objects_zero_lights_size_one, test_parse_crlf,
+			   test_parse_integral_reals_and_extremes,
+			   test_parse_degenerate_triangle_one_note,
+			   test_parse_many_notes_are_capped, test_parse_error_settings,
+			   test_parse_error_huge_integers, test_parse_error_not_finite,
+			   test_parse_error_token_too_long, test_parse_error_unknown_keyword,
+			   test_parse_error_expected_found, test_parse_error_ranges,
+			   test_parse_error_quadric, test_parse_error_object_count_mismatch,
+			   test_parse_error_light_count_mismatch,
+			   test_parse_huge_counts_fail_fast, test_parse_load_missing_file,
+			   test_parse_test_scene, test_parse_real_anachor,
+			   test_parse_real_pistachio102, test_parse_real_adibashaira,
+			   test_parse_real_ajakil, test_parse_real_mdraihansobhan,
+			   test_parse_real_apurbostarry, test_parse_real_nazmultakbir))

@@ -333,14 +333,6 @@ static void test_parse_parts_small_file(void **state)
 	free(t.s);
 }
 
-int main(void)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_parse_parts_big_scene_same_for_any_threads),
-		cmocka_unit_test(test_parse_parts_errors_same_for_any_threads),
-		cmocka_unit_test(test_parse_parts_random_damage),
-		cmocka_unit_test(test_parse_parts_small_file),
-	};
-
-	return cmocka_run_group_tests(tests, NULL, NULL);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_parse_parts_big_scene_same_for_any_threads,
+			   test_parse_parts_errors_same_for_any_threads,
+			   test_parse_parts_random_damage, test_parse_parts_small_file))

@@ -19,14 +19,7 @@ static const struct material mat = { { 0.0, 0.5, 1.0 }, 0.15, 0.1, 0.4, 0.45, 10
  * [-100, -60] x [-100, -60] x [10, 50]. */
 static int setup_cube(void **state)
 {
-	*state = cube_create(vec3_make(-100, -100, 10), 40.0, &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_cube(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, cube_create(vec3_make(-100, -100, 10), 40.0, &mat));
 }
 
 static void test_cube_hit_shrinks_t_max(void **state)
@@ -81,8 +74,7 @@ static void test_cube_slanted_hit(void **state)
 	struct ray r = support_ray(-20, -80, 90, -40, 0, -60);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 1.0, 1e-15);
+	assert_hit(*state, &r, 0.0, &t_max, 1.0, 1e-15);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)), vec3_make(1, 0, 0), 0.0);
 }
 
@@ -91,21 +83,12 @@ static void test_cube_miss_keeps_t_max(void **state)
 	static const double rays[][6] = {
 		/* beside, above, behind, parallel outside a face, and over the
 		 * top edge y = -60 (z = 72 there, and z = 50 only at y = -170) */
-		{ -59, -80, 100, 0, 0, -1 }, { -200, -80, 51, 1, 0, 0 }, { -80, -80, 100, 0, 0, 1 },
+
+		  	{ -59, -80, 100, 0, 0, -1 }, { -200, -80, 51, 1, 0, 0 }, { -80, -80, 100, 0, 0, 1 },
 		{ -200, -59.9, 20, 1, 0, 0 }, { -80, -20, 80, 0, -1, -0.2 },
 	};
-	size_t i;
 
-	for (i = 0; i < sizeof(rays) / sizeof(rays[0]); i++) {
-		struct ray r = support_ray(rays[i][0], rays[i][1], rays[i][2], rays[i][3],
-					   rays[i][4], rays[i][5]);
-		double t_max = 42.0;
-		if (shape_intersect(*state, &r, 0.0, &t_max)) {
-			print_error("ray %zu hit at t = %g\n", i, t_max);
-			fail();
-		}
-		assert_near(t_max, 42.0, 0.0);
-	}
+	support_assert_misses(*state, rays, sizeof(rays) / sizeof(rays[0]));
 }
 
 static void test_cube_edges_and_corners(void **state)
@@ -121,14 +104,9 @@ static void test_cube_edges_and_corners(void **state)
 	struct ray out = support_ray(-50 + eps, -70, 30, -1, 1, 0);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &along, 0.0, &t_max));
-	assert_near(t_max, 100.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &corner, 0.0, &t_max));
-	assert_near(t_max, 1.0, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-8);
+	assert_hit(*state, &along, 0.0, &t_max, 100.0, 0.0);
+	assert_hit(*state, &corner, 0.0, &t_max, 1.0, 1e-12);
+	assert_hit(*state, &in, 0.0, &t_max, 10.0, 1e-8);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 }
@@ -140,13 +118,10 @@ static void test_cube_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* Out through y = -60: t = 20, normal +y. */
-	assert_true(shape_intersect(*state, &r, 1e-9, &t_max));
-	assert_near(t_max, 20.0, 0.0);
+	assert_hit(*state, &r, 1e-9, &t_max, 20.0, 0.0);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)), vec3_make(0, 1, 0), 0.0);
 	/* |d| = 1/4 down to z = 10: 20 / (1/4) = 80. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slow, 1e-9, &t_max));
-	assert_near(t_max, 80.0, 0.0);
+	assert_hit(*state, &slow, 1e-9, &t_max, 80.0, 0.0);
 	assert_vec3_near(shape_normal(*state, ray_at(&slow, t_max)), vec3_make(0, 0, -1), 0.0);
 }
 
@@ -156,11 +131,8 @@ static void test_cube_t_min_and_non_unit(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 2: in at x = -100 (t = 50), out at x = -60 (t = 70). */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 50.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &r, 50.0, &t_max));
-	assert_near(t_max, 70.0, 0.0);
+	assert_hit(*state, &r, 0.0, &t_max, 50.0, 0.0);
+	assert_hit(*state, &r, 50.0, &t_max, 70.0, 0.0);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 70.0, &t_max));
 	assert_true(isinf(t_max));
@@ -219,46 +191,34 @@ static void test_cube_parse(void **state)
 	assert_near(s->mat.color.r, 0.0, 0.0);
 	assert_near(s->mat.color.g, 0.5, 0.0);
 	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.15, 0.0);
-	assert_near(s->mat.kd, 0.1, 0.0);
-	assert_near(s->mat.ks, 0.4, 0.0);
-	assert_near(s->mat.kr, 0.45, 0.0);
-	assert_near(s->mat.shininess, 10.0, 0.0);
+	assert_coefficients(&s->mat, 0.15, 0.1, 0.4, 0.45, 10.0);
 	shape_destroy(s);
-}
-
-static void assert_parse_fails(const char *text, int rc, int line, int col, const char *msg)
-{
-	const struct shape_ops *ops = shape_ops_find_in("cube", 4, NEARFAR_BIT);
-	struct shape *s = NULL;
-	struct diag d;
-
-	assert_int_equal(support_parse_object(ops, text, &s, &d), -rc);
-	assert_null(s);
-	assert_string_equal(d.file, "test.txt");
-	if (d.line != line || d.col != col || !strstr(d.msg, msg)) {
-		print_error("%s:%d:%d: %s\nexpected %d:%d: ...%s...\n", d.file, d.line, d.col, d.msg,
-			    line, col, msg);
-		fail();
-	}
 }
 
 static void test_cube_parse_errors(void **state)
 {
+	static const struct support_object_error cases[] = {
+		{ "0 0 0\n0\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
+		  "cube side must be > 0, found 0" },
+		{ "0 0 0  -2.5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 8,
+		  "cube side must be > 0, found -2.5" },
+		{ "0 0 0 1e151 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
+		  "cube side is too large" },
+		{ "-100 -100\ncube", RT_E_SYNTAX, 2, 1,
+		  "expected a number (cube corner), found 'cube'" },
+		{ "1 2 3\n\t4x", RT_E_SYNTAX, 2, 2,
+		  "expected a number (cube side), found '4x'" },
+		{ "1 2 3 4\n0.5 0.5 0.5\n0.4 -0.2 0.1 0.3 5", RT_E_RANGE, 3, 5,
+		  "diffuse coefficient must be >= 0" },
+		{ "1 2 3 4 1 1 1 0 0 0 0", RT_E_SYNTAX, 1, 22,
+		  "expected a number (shininess), found end of file" },
+	};
+	const struct shape_ops *ops = shape_ops_find_in("cube", 4, NEARFAR_BIT);
+	size_t i;
+
 	(void)state;
-	assert_parse_fails("0 0 0\n0\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
-			   "cube side must be > 0, found 0");
-	assert_parse_fails("0 0 0  -2.5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 8,
-			   "cube side must be > 0, found -2.5");
-	assert_parse_fails("0 0 0 1e151 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
-			   "cube side is too large");
-	assert_parse_fails("-100 -100\ncube", RT_E_SYNTAX, 2, 1,
-			   "expected a number (cube corner), found 'cube'");
-	assert_parse_fails("1 2 3\n\t4x", RT_E_SYNTAX, 2, 2, "expected a number (cube side), found '4x'");
-	assert_parse_fails("1 2 3 4\n0.5 0.5 0.5\n0.4 -0.2 0.1 0.3 5", RT_E_RANGE, 3, 5,
-			   "diffuse coefficient must be >= 0");
-	assert_parse_fails("1 2 3 4 1 1 1 0 0 0 0", RT_E_SYNTAX, 1, 22,
-			   "expected a number (shininess), found end of file");
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++)
+		support_assert_object_error(ops, &cases[i]);
 }
 
 static void test_cube_export_pov(void **state)
@@ -315,22 +275,11 @@ static void test_cube_mesh(void **state)
 	mesh_free(&m);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_cube_hit_shrinks_t_max, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_hit_each_face, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_slanted_hit, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_miss_keeps_t_max, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_edges_and_corners, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_from_inside, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_t_min_and_non_unit, setup_cube, teardown_cube),
-		cmocka_unit_test_setup_teardown(test_cube_bounds_and_table, setup_cube, teardown_cube),
-		cmocka_unit_test(test_cube_degenerate_by_rounding),
-		cmocka_unit_test(test_cube_parse),
-		cmocka_unit_test(test_cube_parse_errors),
-		cmocka_unit_test(test_cube_export_pov),
-		cmocka_unit_test_setup_teardown(test_cube_mesh, setup_cube, teardown_cube),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_cube, support_drop_shape, test_cube_hit_shrinks_t_max,
+				   test_cube_hit_each_face, test_cube_slanted_hit,
+				   test_cube_miss_keeps_t_max, test_cube_edges_and_corners,
+				   test_cube_from_inside, test_cube_t_min_and_non_unit,
+				   test_cube_bounds_and_table),
+	     SUPPORT_TESTS(test_cube_degenerate_by_rounding, test_cube_parse,
+			   test_cube_parse_errors, test_cube_export_pov),
+	     SUPPORT_FIXTURE_TESTS(setup_cube, support_drop_shape, test_cube_mesh))

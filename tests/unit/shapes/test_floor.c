@@ -15,14 +15,7 @@
 /* The assignment's Floor(1000, 20). */
 static int setup_floor(void **state)
 {
-	*state = floor_create(1000.0, 20.0);
-	return *state ? 0 : -1;
-}
-
-static int teardown_floor(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, floor_create(1000.0, 20.0));
 }
 
 static bool white_at(const struct shape *s, double x, double y)
@@ -42,15 +35,10 @@ static void test_floor_hit_from_above_and_below(void **state)
 	struct ray slant = support_ray(0, 0, 10, 3, 4, -5);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &down, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
+	assert_hit(*state, &down, 0.0, &t_max, 10.0, 0.0);
+	assert_hit(*state, &up, 0.0, &t_max, 10.0, 0.0);
 	/* Non-unit direction (|d| = sqrt(50)): z = 10 - 5t = 0 at t = 2. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slant, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
+	assert_hit(*state, &slant, 0.0, &t_max, 2.0, 0.0);
 }
 
 static void test_floor_miss_parallel_behind(void **state)
@@ -179,11 +167,7 @@ static void test_floor_material_and_bounds(void **state)
 	struct aabb box;
 
 	/* Coefficients 0.4 0.2 0.2 0.2, shininess 1. */
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.2, 0.0);
-	assert_near(s->mat.ks, 0.2, 0.0);
-	assert_near(s->mat.kr, 0.2, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.2, 0.2, 0.2, 1.0);
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-500, -500, 0), 0.0);
 	assert_vec3_near(box.max, vec3_make(500, 500, 0), 0.0);
@@ -255,11 +239,7 @@ static void test_floor_view_finite_keeps_rule(void **state)
 	assert_non_null(s);
 	assert_non_null(classic);
 	assert_ptr_equal(s->ops, classic->ops);
-	assert_near(s->mat.ka, 0.1, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.6, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.1, 0.3, 0.0, 0.6, 1.0);
 	assert_near(s->mat.color.r, 1.0, 0.0);
 	/* (0, 0): (500 / 30 -> 16) + 16, white; x = 10: 510 / 30 = 17 exactly:
 	 * black; the parities agree with the classic floor of those tiles. */
@@ -358,14 +338,9 @@ static void test_floor_infinite_everywhere(void **state)
 	assert_non_null(s);
 	/* Far beyond any finite floor's square, from above and below; a
 	 * non-unit direction. */
-	assert_true(shape_intersect(s, &far, 0.0, &t_max));
-	assert_near(t_max, 10.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &slant, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &up, 0.0, &t_max));
-	assert_near(t_max, 2.0, 0.0);
+	assert_hit(s, &far, 0.0, &t_max, 10.0, 0.0);
+	assert_hit(s, &slant, 0.0, &t_max, 2.0, 0.0);
+	assert_hit(s, &up, 0.0, &t_max, 2.0, 0.0);
 	/* The open interval shrinks and is kept. */
 	t_max = 2.0;
 	assert_false(shape_intersect(s, &up, 0.0, &t_max));
@@ -384,11 +359,7 @@ static void test_floor_infinite_everywhere(void **state)
 	assert_true(shape_is_textured(s));
 	assert_null(shape_degenerate(s));
 	/* The material: the given coefficients, a white tile colour. */
-	assert_near(s->mat.ka, 0.1, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.6, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.1, 0.3, 0.0, 0.6, 1.0);
 	assert_near(s->mat.color.g, 1.0, 0.0);
 	shape_destroy(s);
 }
@@ -423,23 +394,15 @@ static void test_floor_infinite_export_pov(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_floor_hit_from_above_and_below, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_miss_parallel_behind, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_t_interval, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_extent_half_open, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_normal_is_up, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_tile_parity, setup_floor, teardown_floor),
-		cmocka_unit_test(test_floor_parity_other_sizes),
-		cmocka_unit_test_setup_teardown(test_floor_material_and_bounds, setup_floor, teardown_floor),
-		cmocka_unit_test_setup_teardown(test_floor_export_pov, setup_floor, teardown_floor),
-		cmocka_unit_test(test_floor_view_finite_keeps_rule),
-		cmocka_unit_test(test_floor_infinite_parity_negative),
-		cmocka_unit_test(test_floor_infinite_parity_far_out),
-		cmocka_unit_test(test_floor_infinite_everywhere),
-		cmocka_unit_test(test_floor_infinite_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_floor, support_drop_shape,
+				   test_floor_hit_from_above_and_below,
+				   test_floor_miss_parallel_behind, test_floor_t_interval,
+				   test_floor_extent_half_open, test_floor_normal_is_up,
+				   test_floor_tile_parity),
+	     SUPPORT_TESTS(test_floor_parity_other_sizes),
+	     SUPPORT_FIXTURE_TESTS(setup_floor, support_drop_shape, test_floor_material_and_bounds,
+				   test_floor_export_pov),
+	     SUPPORT_TESTS(test_floor_view_finite_keeps_rule,
+			   test_floor_infinite_parity_negative,
+			   test_floor_infinite_parity_far_out, test_floor_infinite_everywhere,
+			   test_floor_infinite_export_pov))

@@ -115,18 +115,7 @@ static void test_floor_texture_unreadable(void **state)
 	shape_destroy(fl);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_floor_texture_classic),
-		cmocka_unit_test(test_floor_texture_infinite_and_black),
-		cmocka_unit_test(test_floor_texture_unreadable),
-	};
-	int rc;
-
-	if (setup(NULL) != 0)
-		return 1;
-	rc = SUPPORT_RUN(tests, argc, argv);
-	teardown(NULL);
-	return rc;
-}
+SUPPORT_MAIN_AROUND(setup, teardown,
+		    SUPPORT_TESTS(test_floor_texture_classic,
+				  test_floor_texture_infinite_and_black,
+				  test_floor_texture_unreadable))

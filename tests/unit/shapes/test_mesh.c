@@ -271,17 +271,8 @@ static void test_mesh_implicit_plane_and_empty(void **state)
 	mesh_free(&m);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_mesh_add_triangle_turns_to_the_normals),
-		cmocka_unit_test(test_mesh_clear_keeps_the_memory),
-		cmocka_unit_test(test_mesh_box_faces),
-		cmocka_unit_test(test_mesh_texture_repeats),
-		cmocka_unit_test(test_mesh_grid_cells_in_proportion),
-		cmocka_unit_test(test_mesh_implicit_ball),
-		cmocka_unit_test(test_mesh_implicit_stays_in_the_box),
-		cmocka_unit_test(test_mesh_implicit_plane_and_empty),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_mesh_add_triangle_turns_to_the_normals,
+			   test_mesh_clear_keeps_the_memory, test_mesh_box_faces,
+			   test_mesh_texture_repeats, test_mesh_grid_cells_in_proportion,
+			   test_mesh_implicit_ball, test_mesh_implicit_stays_in_the_box,
+			   test_mesh_implicit_plane_and_empty))

@@ -22,14 +22,7 @@ static const struct material mat = { { 1.0, 0.0, 0.0 }, 0.4, 0.2, 0.1, 0.3, 5.0,
  * that is x = 4 - z / 3; the others likewise. */
 static int setup_pyramid(void **state)
 {
-	*state = pyramid_create(vec3_make(0, 0, 0), 4.0, 6.0, &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_pyramid(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, pyramid_create(vec3_make(0, 0, 0), 4.0, 6.0, &mat));
 }
 
 static void test_pyramid_hit_shrinks_t_max(void **state)
@@ -88,18 +81,8 @@ static void test_pyramid_miss_keeps_t_max(void **state)
 		{ 10, 2, 6.5, -1, 0, 0 }, { 5, 2, 10, 0, 0, -1 }, { 10, 2, 1, 1, 0, 0 },
 		{ 2, 2, -1, 1, 0, 0 }, { 10, 3.5, 3, -1, 0, 0 }, { 2, 2, 10, 0, 0, 1 },
 	};
-	size_t i;
 
-	for (i = 0; i < sizeof(rays) / sizeof(rays[0]); i++) {
-		struct ray r = support_ray(rays[i][0], rays[i][1], rays[i][2], rays[i][3],
-					   rays[i][4], rays[i][5]);
-		double t_max = 42.0;
-		if (shape_intersect(*state, &r, 0.0, &t_max)) {
-			print_error("ray %zu hit at t = %g\n", i, t_max);
-			fail();
-		}
-		assert_near(t_max, 42.0, 0.0);
-	}
+	support_assert_misses(*state, rays, sizeof(rays) / sizeof(rays[0]));
 }
 
 static void test_pyramid_apex_and_edges(void **state)
@@ -109,15 +92,12 @@ static void test_pyramid_apex_and_edges(void **state)
 	double eps = 1e-9;
 
 	/* Straight down onto the apex: a corner hits, at t = 4. */
-	assert_true(shape_intersect(*state, &apex, 0.0, &t_max));
-	assert_near(t_max, 4.0, 0.0);
+	assert_hit(*state, &apex, 0.0, &t_max, 4.0, 0.0);
 	/* Just inside and just outside the base's edge x = 4, from below. */
 	{
 		struct ray in = support_ray(4 - eps, 2, -5, 0, 0, 1);
 		struct ray out = support_ray(4 + eps, 2, -5, 0, 0, 1);
-		t_max = INFINITY;
-		assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-		assert_near(t_max, 5.0, 0.0);
+		assert_hit(*state, &in, 0.0, &t_max, 5.0, 0.0);
 		t_max = INFINITY;
 		assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 	}
@@ -127,9 +107,7 @@ static void test_pyramid_apex_and_edges(void **state)
 	{
 		struct ray in = support_ray(-2 - eps, -4, 3, 1, 1, 0);
 		struct ray out = support_ray(-2 + eps, -4, 3, 1, 1, 0);
-		t_max = INFINITY;
-		assert_true(shape_intersect(*state, &in, 0.0, &t_max));
-		assert_near(t_max, 5.0, 1e-8);
+		assert_hit(*state, &in, 0.0, &t_max, 5.0, 1e-8);
 		t_max = INFINITY;
 		assert_false(shape_intersect(*state, &out, 0.0, &t_max));
 	}
@@ -143,18 +121,13 @@ static void test_pyramid_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* Out through the +x side at x = 11/3: t = 7/6, normal (3, 0, 1)/√10. */
-	assert_true(shape_intersect(*state, &r, 1e-9, &t_max));
-	assert_near(t_max, 7.0 / 6.0, 1e-12);
+	assert_hit(*state, &r, 1e-9, &t_max, 7.0 / 6.0, 1e-12);
 	assert_vec3_near(shape_normal(*state, ray_at(&r, t_max)),
 			 vec3_normalize(vec3_make(3, 0, 1)), 1e-15);
 	/* Up from (1, 1, 0.5): the -x and -y sides meet x = 1 at z = 3 (t =
 	 * 2.5); down: the base at t = 0.5. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 1e-9, &t_max));
-	assert_near(t_max, 2.5, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &down, 1e-9, &t_max));
-	assert_near(t_max, 0.5, 1e-12);
+	assert_hit(*state, &up, 1e-9, &t_max, 2.5, 1e-12);
+	assert_hit(*state, &down, 1e-9, &t_max, 0.5, 1e-12);
 	assert_vec3_near(shape_normal(*state, ray_at(&down, t_max)), vec3_make(0, 0, -1), 0.0);
 }
 
@@ -166,8 +139,7 @@ static void test_pyramid_t_min_and_behind(void **state)
 
 	/* In at x = 11/3 (t = 19/3), out at x = 1/3 (t = 29/3): with t_min
 	 * past the entry, the exit. */
-	assert_true(shape_intersect(*state, &r, 7.0, &t_max));
-	assert_near(t_max, 29.0 / 3.0, 1e-12);
+	assert_hit(*state, &r, 7.0, &t_max, 29.0 / 3.0, 1e-12);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 10.0, &t_max));
 	assert_true(isinf(t_max));
@@ -182,12 +154,9 @@ static void test_pyramid_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 0.5: twice the distance, 2 (10 - 11/3). */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 2.0 * (10 - 11.0 / 3), 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 2.0 * (10 - 11.0 / 3), 1e-12);
 	/* |d| = 3 from inside: (11/3 - 2.5) / 3. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &in, 1e-9, &t_max));
-	assert_near(t_max, 7.0 / 18.0, 1e-12);
+	assert_hit(*state, &in, 1e-9, &t_max, 7.0 / 18.0, 1e-12);
 }
 
 static void test_pyramid_unit_normals(void **state)
@@ -244,11 +213,8 @@ static void test_pyramid_bounds_both_placements(void **state)
 	assert_vec3_near(box.min, vec3_make(-55, -15, 5), 0.0);
 	assert_vec3_near(box.max, vec3_make(-25, 15, 45), 0.0);
 	/* The apexes: (15, 15, 60.1) and (-40, 0, 45). */
-	assert_true(shape_intersect(corner, &down, 0.0, &t_max));
-	assert_near(t_max, 100 - 60.1, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(centred, &apex, 0.0, &t_max));
-	assert_near(t_max, 55.0, 1e-12);
+	assert_hit(corner, &down, 0.0, &t_max, 100 - 60.1, 1e-12);
+	assert_hit(centred, &apex, 0.0, &t_max, 55.0, 1e-12);
 	/* The tables: the dialect each placement is read in, one keyword. */
 	assert_ptr_equal(corner->ops, shape_ops_find_in("pyramid", 7, PYRAMID_BIT));
 	assert_ptr_equal(centred->ops, shape_ops_find_in("pyramid", 7, NEARFAR_BIT));
@@ -303,11 +269,7 @@ static void test_pyramid_parse_both_placements(void **state)
 	assert_vec3_near(box.min, vec3_make(-40, 0, 5), 0.0);
 	assert_vec3_near(box.max, vec3_make(-10, 30, 45), 0.0);
 	assert_near(s->mat.color.r, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.2, 0.0);
-	assert_near(s->mat.ks, 0.0, 0.0);
-	assert_near(s->mat.kr, 0.4, 0.0);
-	assert_near(s->mat.shininess, 1.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.2, 0.0, 0.4, 1.0);
 	shape_destroy(s);
 	assert_int_equal(support_parse_object(centred_ops, text, &s, &d), 0);
 	assert_ptr_equal(s->ops, centred_ops);
@@ -318,50 +280,43 @@ static void test_pyramid_parse_both_placements(void **state)
 }
 
 /* Each parse error: the code, the line and column of the offending token,
- * and the message. */
-static void assert_parse_fails(const struct shape_ops *ops, const char *text, int rc, int line,
-			       int col, const char *msg)
-{
-	struct shape *s = (struct shape *)&s;
-	struct diag d;
-
-	assert_int_equal(support_parse_object(ops, text, &s, &d), -rc);
-	assert_null(s);
-	assert_string_equal(d.file, "test.txt");
-	if (d.line != line || d.col != col || !strstr(d.msg, msg)) {
-		print_error("%s:%d:%d: %s\nexpected %d:%d: ...%s...\n", d.file, d.line, d.col, d.msg,
-			    line, col, msg);
-		fail();
-	}
-}
-
+ * and the message, read as the corner placement or (centred) the centred
+ * one. */
 static void test_pyramid_parse_errors(void **state)
 {
+	static const struct {
+		bool centred;
+		struct support_object_error e;
+	} cases[] = {
+		{ false, { "0 0 0\n0 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
+		           "pyramid base length must be > 0, found 0" } },
+		{ false, { "0 0 0\n10  -5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 5,
+		           "pyramid height must be > 0, found -5" } },
+		{ true, { "0 0 0\n-1 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
+		          "pyramid base width must be > 0, found -1" } },
+		{ true, { "0 0 0 10 0 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 10,
+		          "pyramid height must be > 0, found 0" } },
+		{ false, { "0 0 0 1e200 5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
+		           "pyramid base length is too large" } },
+		{ false, { "0 0 abc 10 5", RT_E_SYNTAX, 1, 5,
+		           "expected a number (pyramid corner), found 'abc'" } },
+		{ true, { "0 0\n\n  x", RT_E_SYNTAX, 3, 3,
+		          "expected a number (pyramid base centre), found 'x'" } },
+		{ false, { "0 0 0 10", RT_E_SYNTAX, 1, 9,
+		           "expected a number (pyramid height), found end of file" } },
+		/* The material is checked too: a colour out of [0, 1]. */
+		{ false, { "0 0 0 10 5\n1 2 0\n0.4 0.2 0.1 0.3 5", RT_E_RANGE, 2, 3,
+		           "colour component must be in [0, 1]" } },
+		{ false, { "0 0 0 nan 5", RT_E_RANGE, 1, 7,
+		           "expected a finite decimal number (pyramid base length)" } },
+	};
 	const struct shape_ops *corner_ops = shape_ops_find_in("pyramid", 7, PYRAMID_BIT);
 	const struct shape_ops *centred_ops = shape_ops_find_in("pyramid", 7, NEARFAR_BIT);
+	size_t i;
 
 	(void)state;
-	assert_parse_fails(corner_ops, "0 0 0\n0 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
-			   "pyramid base length must be > 0, found 0");
-	assert_parse_fails(corner_ops, "0 0 0\n10  -5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 5,
-			   "pyramid height must be > 0, found -5");
-	assert_parse_fails(centred_ops, "0 0 0\n-1 5\n1 0 0\n0.4 0.2 0.1 0.3\n5\n", RT_E_RANGE, 2, 1,
-			   "pyramid base width must be > 0, found -1");
-	assert_parse_fails(centred_ops, "0 0 0 10 0 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 10,
-			   "pyramid height must be > 0, found 0");
-	assert_parse_fails(corner_ops, "0 0 0 1e200 5 1 0 0 0.4 0.2 0.1 0.3 5", RT_E_RANGE, 1, 7,
-			   "pyramid base length is too large");
-	assert_parse_fails(corner_ops, "0 0 abc 10 5", RT_E_SYNTAX, 1, 5,
-			   "expected a number (pyramid corner), found 'abc'");
-	assert_parse_fails(centred_ops, "0 0\n\n  x", RT_E_SYNTAX, 3, 3,
-			   "expected a number (pyramid base centre), found 'x'");
-	assert_parse_fails(corner_ops, "0 0 0 10", RT_E_SYNTAX, 1, 9,
-			   "expected a number (pyramid height), found end of file");
-	/* The material is checked too: a colour out of [0, 1]. */
-	assert_parse_fails(corner_ops, "0 0 0 10 5\n1 2 0\n0.4 0.2 0.1 0.3 5", RT_E_RANGE, 2, 3,
-			   "colour component must be in [0, 1]");
-	assert_parse_fails(corner_ops, "0 0 0 nan 5", RT_E_RANGE, 1, 7,
-			   "expected a finite decimal number (pyramid base length)");
+	for (i = 0; i < sizeof(cases) / sizeof(cases[0]); i++)
+		support_assert_object_error(cases[i].centred ? centred_ops : corner_ops, &cases[i].e);
 }
 
 /* True when (x, y) lies inside the triangle's projection on z (strictly,
@@ -508,23 +463,12 @@ static void test_pyramid_mesh(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_pyramid_hit_shrinks_t_max, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_hit_each_face, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_miss_keeps_t_max, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_apex_and_edges, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_from_inside, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_t_min_and_behind, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test_setup_teardown(test_pyramid_non_unit_direction, setup_pyramid, teardown_pyramid),
-		cmocka_unit_test(test_pyramid_unit_normals),
-		cmocka_unit_test(test_pyramid_bounds_both_placements),
-		cmocka_unit_test(test_pyramid_degenerate_by_rounding),
-		cmocka_unit_test(test_pyramid_parse_both_placements),
-		cmocka_unit_test(test_pyramid_parse_errors),
-		cmocka_unit_test(test_pyramid_export_pov),
-		cmocka_unit_test(test_pyramid_mesh),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_pyramid, support_drop_shape,
+				   test_pyramid_hit_shrinks_t_max, test_pyramid_hit_each_face,
+				   test_pyramid_miss_keeps_t_max, test_pyramid_apex_and_edges,
+				   test_pyramid_from_inside, test_pyramid_t_min_and_behind,
+				   test_pyramid_non_unit_direction),
+	     SUPPORT_TESTS(test_pyramid_unit_normals, test_pyramid_bounds_both_placements,
+			   test_pyramid_degenerate_by_rounding,
+			   test_pyramid_parse_both_placements, test_pyramid_parse_errors,
+			   test_pyramid_export_pov, test_pyramid_mesh))

@@ -61,16 +61,11 @@ static void test_quadric_tangent_inside_non_unit(void **state)
 
 	(void)state;
 	/* x = 2: t^2 - 20 t + 100 = 0, the double root t = 10. */
-	assert_true(shape_intersect(s, &graze, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-9);
-	t_max = INFINITY;
+	assert_hit(s, &graze, 0.0, &t_max, 10.0, 1e-9);
 	/* From the centre: t = +-2, the positive one. */
-	assert_true(shape_intersect(s, &inside, 1e-6, &t_max));
-	assert_near(t_max, 2.0, 1e-12);
-	t_max = INFINITY;
+	assert_hit(s, &inside, 1e-6, &t_max, 2.0, 1e-12);
 	/* |d| = 2: t = 4. */
-	assert_true(shape_intersect(s, &fast, 0.0, &t_max));
-	assert_near(t_max, 4.0, 1e-12);
+	assert_hit(s, &fast, 0.0, &t_max, 4.0, 1e-12);
 	shape_destroy(s);
 }
 
@@ -85,19 +80,14 @@ static void test_quadric_clipped_near_root_falls_through(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 12.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 12.0, 1e-12);
 	/* At x = 1: z = +-sqrt(3), so t = 10 + sqrt(3). */
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &slant, 0.0, &t_max));
-	assert_near(t_max, 10.0 + sqrt(3.0), 1e-12);
+	assert_hit(s, &slant, 0.0, &t_max, 10.0 + sqrt(3.0), 1e-12);
 	/* A far root clipped too: the lower hemisphere seen from below at
 	 * x = 1, z in [-5, -1]: near root z = -sqrt(3) is in, t = 10 - sqrt(3). */
 	shape_destroy(s);
 	s = quadric(sphere4, 0, 0, -5, 0, 0, 4);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &slant, 0.0, &t_max));
-	assert_near(t_max, 10.0 - sqrt(3.0), 1e-12);
+	assert_hit(s, &slant, 0.0, &t_max, 10.0 - sqrt(3.0), 1e-12);
 	shape_destroy(s);
 	/* Both roots clipped (the band z in [-1, 1] seen along the axis): a
 	 * miss, and t_max untouched. */
@@ -118,18 +108,13 @@ static void test_quadric_clip_box_inclusive(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_true(shape_intersect(s, &up, 0.0, &t_max));
-	assert_near(t_max, 8.0, 0.0);
+	assert_hit(s, &up, 0.0, &t_max, 8.0, 0.0);
 	/* From above: z = 2 is clipped, z = -2 (t = 12) is on the face. */
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &down, 0.0, &t_max));
-	assert_near(t_max, 12.0, 0.0);
+	assert_hit(s, &down, 0.0, &t_max, 12.0, 0.0);
 	shape_destroy(s);
 	/* The upper face: z in [-5, -2] still contains z = -2. */
 	s = quadric(sphere4, 0, 0, -5, 0, 0, 3);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &up, 0.0, &t_max));
-	assert_near(t_max, 8.0, 0.0);
+	assert_hit(s, &up, 0.0, &t_max, 8.0, 0.0);
 	shape_destroy(s);
 	/* And z in [-5, -2.0000001] does not. */
 	s = quadric(sphere4, 0, 0, -5, 0, 0, 2.9999999);
@@ -199,8 +184,7 @@ static void test_quadric_clip_on_three_axes(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_true(shape_intersect(s, &in, 0.0, &t_max));
-	assert_near(t_max, 10.0 + sqrt(2.0), 1e-12);
+	assert_hit(s, &in, 0.0, &t_max, 10.0 + sqrt(2.0), 1e-12);
 	t_max = INFINITY;
 	assert_false(shape_intersect(s, &out, 0.0, &t_max));
 	shape_destroy(s);
@@ -224,12 +208,9 @@ static void test_quadric_linear_case(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_true(shape_intersect(p, &up, 0.0, &t_max));
-	assert_near(t_max, 3.0, 0.0);
+	assert_hit(p, &up, 0.0, &t_max, 3.0, 0.0);
 	assert_vec3_near(shape_normal(p, vec3_make(0.5, 0.5, 3)), vec3_make(0, 0, 1), 0.0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(q, &r, 0.0, &t_max));
-	assert_near(t_max, 6.0, 0.0);
+	assert_hit(q, &r, 0.0, &t_max, 6.0, 0.0);
 	/* The gradient (2x, 0, -1) at (1, 0, 1) is (2, 0, -1) / sqrt(5). */
 	assert_vec3_near(shape_normal(q, vec3_make(1, 0, 1)),
 			 vec3_make(2 / sqrt(5.0), 0, -1 / sqrt(5.0)), 1e-15);
@@ -286,24 +267,18 @@ static void test_quadric_cross_terms(void **state)
 	(void)state;
 	s = quadric(hyp, 0, 0, 0, 0, 0, 0);
 	r = support_ray(-1, 0.5, 0, 1, 0, 0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 3.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 3.0, 1e-12);
 	/* Gradient (y, x, 0) at (2, 0.5, 0): (0.5, 2, 0) / sqrt(4.25). */
 	assert_vec3_near(shape_normal(s, vec3_make(2, 0.5, 0)),
 			 vec3_make(0.5 / sqrt(4.25), 2 / sqrt(4.25), 0), 1e-15);
 	shape_destroy(s);
 	s = quadric(xz, 0, 0, 0, 0, 0, 0);
 	r = support_ray(0.5, 0, -1, 0, 0, 1);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 3.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 3.0, 1e-12);
 	shape_destroy(s);
 	s = quadric(yz, 0, 0, 0, 0, 0, 0);
 	r = support_ray(0, -1, 0.25, 0, 1, 0);
-	t_max = INFINITY;
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 5.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 5.0, 1e-12);
 	shape_destroy(s);
 }
 
@@ -475,8 +450,7 @@ static void test_quadric_parse(void **state)
 	s = sc->shapes[0];
 	assert_ptr_equal(s->ops, shape_ops_find("general", 7));
 	assert_false(shape_bounds(s, &box));
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 10.0, 1e-12);
 	assert_near(s->mat.color.b, 1.0, 0.0);
 	assert_near(s->mat.shininess, 3.0, 0.0);
 	scene_destroy(sc);
@@ -574,25 +548,13 @@ static void test_quadric_closed_only_as_a_whole_ellipsoid(void **state)
 	assert_false(closed(saddle, 0, 0, 0, 0, 0, 0));
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_quadric_unclipped_sphere),
-		cmocka_unit_test(test_quadric_tangent_inside_non_unit),
-		cmocka_unit_test(test_quadric_clipped_near_root_falls_through),
-		cmocka_unit_test(test_quadric_clip_box_inclusive),
-		cmocka_unit_test(test_quadric_clip_each_axis),
-		cmocka_unit_test(test_quadric_bounds_only_when_clipped_on_all_axes),
-		cmocka_unit_test(test_quadric_clip_on_three_axes),
-		cmocka_unit_test(test_quadric_linear_case),
-		cmocka_unit_test(test_quadric_unit_normals),
-		cmocka_unit_test(test_quadric_cross_terms),
-		cmocka_unit_test(test_quadric_normal_each_term),
-		cmocka_unit_test(test_quadric_normal_all_terms),
-		cmocka_unit_test(test_quadric_hit_all_terms),
-		cmocka_unit_test(test_quadric_parse),
-		cmocka_unit_test(test_quadric_export_pov),
-		cmocka_unit_test(test_quadric_closed_only_as_a_whole_ellipsoid),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_quadric_unclipped_sphere, test_quadric_tangent_inside_non_unit,
+			   test_quadric_clipped_near_root_falls_through,
+			   test_quadric_clip_box_inclusive, test_quadric_clip_each_axis,
+			   test_quadric_bounds_only_when_clipped_on_all_axes,
+			   test_quadric_clip_on_three_axes, test_quadric_linear_case,
+			   test_quadric_unit_normals, test_quadric_cross_terms,
+			   test_quadric_normal_each_term, test_quadric_normal_all_terms,
+			   test_quadric_hit_all_terms, test_quadric_parse,
+			   test_quadric_export_pov,
+			   test_quadric_closed_only_as_a_whole_ellipsoid))

@@ -223,22 +223,11 @@ static void test_registry_unknown_is_null(void **state)
 
 static void test_registry_keyword_list(void **state)
 {
-	const struct shape_ops *const *all = shape_ops_all();
-	char expected[512] = "";
-	size_t i, j;
+	char expected[512];
 
 	/* The registry's keywords in its order, each once (the pyramid's
 	 * two tables give one entry), joined by ", ". */
-	for (i = 0; all[i]; i++) {
-		bool seen = false;
-		for (j = 0; j < i; j++)
-			seen = seen || strcmp(all[j]->keyword, all[i]->keyword) == 0;
-		if (seen)
-			continue;
-		if (expected[0])
-			strcat(expected, ", ");
-		strcat(expected, all[i]->keyword);
-	}
+	support_keyword_list(expected, sizeof(expected));
 	(void)state;
 	assert_string_equal(shape_keywords(), expected);
 	/* The list is built once and stays the same. */
@@ -296,18 +285,9 @@ static void test_registry_every_keyword_parses(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_registry_finds_every_keyword),
-		cmocka_unit_test(test_registry_dialect_masks),
-		cmocka_unit_test(test_registry_mask_zero_is_every_dialect),
-		cmocka_unit_test(test_registry_keyword_list_per_dialect),
-		cmocka_unit_test(test_registry_keyword_lists_threads),
-		cmocka_unit_test(test_registry_unknown_is_null),
-		cmocka_unit_test(test_registry_keyword_list),
-		cmocka_unit_test(test_registry_tables_complete),
-		cmocka_unit_test(test_registry_every_keyword_parses),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_registry_finds_every_keyword, test_registry_dialect_masks,
+			   test_registry_mask_zero_is_every_dialect,
+			   test_registry_keyword_list_per_dialect,
+			   test_registry_keyword_lists_threads, test_registry_unknown_is_null,
+			   test_registry_keyword_list, test_registry_tables_complete,
+			   test_registry_every_keyword_parses))

@@ -339,26 +339,17 @@ static void test_solve_convex_face(void **state)
 	assert_int_equal(solve_convex_face(unit_cube, 6, vec3_make(0.5, 0.45, 0.1)), 4);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_solve_quadratic_two_roots_ascending),
-		cmocka_unit_test(test_solve_quadratic_double_and_no_roots),
-		cmocka_unit_test(test_solve_quadratic_linear_case),
-		cmocka_unit_test(test_solve_quadratic_cancellation),
-		cmocka_unit_test(test_solve_ray_sphere_hit_near_root),
-		cmocka_unit_test(test_solve_ray_sphere_inside_behind_miss),
-		cmocka_unit_test(test_solve_ray_sphere_tangent),
-		cmocka_unit_test(test_solve_ray_sphere_non_unit_direction),
-		cmocka_unit_test(test_solve_ray_sphere_small_and_far),
-		cmocka_unit_test(test_solve_ray_triangle_both_sides),
-		cmocka_unit_test(test_solve_ray_triangle_edges_inclusive),
-		cmocka_unit_test(test_solve_ray_triangle_parallel_behind_interval),
-		cmocka_unit_test(test_solve_ray_triangle_slanted),
-		cmocka_unit_test(test_solve_ray_convex_enter_and_leave),
-		cmocka_unit_test(test_solve_ray_convex_misses),
-		cmocka_unit_test(test_solve_ray_convex_edges_inclusive),
-		cmocka_unit_test(test_solve_convex_face),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_solve_quadratic_two_roots_ascending,
+			   test_solve_quadratic_double_and_no_roots,
+			   test_solve_quadratic_linear_case, test_solve_quadratic_cancellation,
+			   test_solve_ray_sphere_hit_near_root,
+			   test_solve_ray_sphere_inside_behind_miss,
+			   test_solve_ray_sphere_tangent,
+			   test_solve_ray_sphere_non_unit_direction,
+			   test_solve_ray_sphere_small_and_far,
+			   test_solve_ray_triangle_both_sides,
+			   test_solve_ray_triangle_edges_inclusive,
+			   test_solve_ray_triangle_parallel_behind_interval,
+			   test_solve_ray_triangle_slanted,
+			   test_solve_ray_convex_enter_and_leave, test_solve_ray_convex_misses,
+			   test_solve_ray_convex_edges_inclusive, test_solve_convex_face))

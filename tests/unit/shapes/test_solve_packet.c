@@ -594,15 +594,9 @@ static void test_solve_packet_normal_methods(void **state)
 		shape_destroy(shapes[m]);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		SUPPORT_ISA_TESTS(test_solve_packet_sphere),
-		SUPPORT_ISA_TESTS(test_solve_packet_triangle),
-		SUPPORT_ISA_TESTS(test_solve_packet_floor),
-		cmocka_unit_test(test_solve_packet_shape_methods),
-		SUPPORT_ISA_TESTS(test_solve_packet_floor_cells),
-		SUPPORT_ISA_TESTS(test_solve_packet_normal_methods),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_ISA_TESTS(test_solve_packet_sphere),
+	     SUPPORT_ISA_TESTS(test_solve_packet_triangle),
+	     SUPPORT_ISA_TESTS(test_solve_packet_floor),
+	     SUPPORT_TESTS(test_solve_packet_shape_methods),
+	     SUPPORT_ISA_TESTS(test_solve_packet_floor_cells),
+	     SUPPORT_ISA_TESTS(test_solve_packet_normal_methods))

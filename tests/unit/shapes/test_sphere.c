@@ -16,14 +16,7 @@ static const struct material mat = { { 0.25, 0.5, 1.0 }, 0.4, 0.3, 0.2, 0.1, 7.0
 /* A radius-2 sphere at the origin. */
 static int setup_sphere(void **state)
 {
-	*state = sphere_create(vec3_make(0, 0, 0), 2.0, &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_sphere(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, sphere_create(vec3_make(0, 0, 0), 2.0, &mat));
 }
 
 static void test_sphere_hit_shrinks_t_max(void **state)
@@ -58,8 +51,7 @@ static void test_sphere_tangent(void **state)
 	double t_max = INFINITY;
 
 	/* y = 2 touches the sphere at (0, 2, 0), t = 10. */
-	assert_true(shape_intersect(*state, &graze, 0.0, &t_max));
-	assert_near(t_max, 10.0, 1e-9);
+	assert_hit(*state, &graze, 0.0, &t_max, 10.0, 1e-9);
 }
 
 static void test_sphere_from_inside(void **state)
@@ -68,8 +60,7 @@ static void test_sphere_from_inside(void **state)
 	double t_max = INFINITY;
 
 	/* From (0, 0, 1): roots -3 and 1; the exit at z = 2. */
-	assert_true(shape_intersect(*state, &r, 1e-6, &t_max));
-	assert_near(t_max, 1.0, 1e-12);
+	assert_hit(*state, &r, 1e-6, &t_max, 1.0, 1e-12);
 }
 
 static void test_sphere_t_min_respected(void **state)
@@ -77,8 +68,7 @@ static void test_sphere_t_min_respected(void **state)
 	struct ray r = support_ray(0, 0, -10, 0, 0, 1);
 	double t_max = INFINITY;
 
-	assert_true(shape_intersect(*state, &r, 9.0, &t_max));
-	assert_near(t_max, 12.0, 1e-12);
+	assert_hit(*state, &r, 9.0, &t_max, 12.0, 1e-12);
 	t_max = INFINITY;
 	assert_false(shape_intersect(*state, &r, 12.5, &t_max));
 	assert_true(isinf(t_max));
@@ -90,8 +80,7 @@ static void test_sphere_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 0.5: t = 8 / 0.5 = 16. */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 16.0, 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 16.0, 1e-12);
 }
 
 static void test_sphere_unit_normals(void **state)
@@ -125,8 +114,7 @@ static void test_sphere_hit_off_centre(void **state)
 	(void)state;
 	/* 1.5 off the axis of a radius-2.5 sphere: the chord's half-length
 	 * is sqrt(6.25 - 2.25) = 2, so z = 3 - 2 = 1 and t = 8. */
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 8.0, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 8.0, 1e-12);
 	/* The normal there is (0, 1.5, -2) / 2.5. */
 	n = shape_normal(s, ray_at(&r, t_max));
 	assert_vec3_near(n, vec3_make(0, 0.6, -0.8), 1e-12);
@@ -164,16 +152,11 @@ static void test_sphere_parse(void **state)
 	assert_vec3_near(box.min, vec3_make(-3, -6, -0.5), 0.0);
 	assert_vec3_near(box.max, vec3_make(5, 2, 7.5), 0.0);
 	/* z = 3.5 - 4 = -0.5, t = 9.5. */
-	assert_true(shape_intersect(s, &r, 0.0, &t_max));
-	assert_near(t_max, 9.5, 1e-12);
+	assert_hit(s, &r, 0.0, &t_max, 9.5, 1e-12);
 	assert_near(s->mat.color.r, 0.25, 0.0);
 	assert_near(s->mat.color.g, 0.5, 0.0);
 	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_near(s->mat.ka, 0.4, 0.0);
-	assert_near(s->mat.kd, 0.3, 0.0);
-	assert_near(s->mat.ks, 0.2, 0.0);
-	assert_near(s->mat.kr, 0.1, 0.0);
-	assert_near(s->mat.shininess, 7.0, 0.0);
+	assert_coefficients(&s->mat, 0.4, 0.3, 0.2, 0.1, 7.0);
 	scene_destroy(sc);
 }
 
@@ -220,20 +203,10 @@ static void test_sphere_export_pov(void **state)
 	shape_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_sphere_hit_shrinks_t_max, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_miss_keeps_t_max, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_tangent, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_from_inside, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_t_min_respected, setup_sphere, teardown_sphere),
-		cmocka_unit_test_setup_teardown(test_sphere_non_unit_direction, setup_sphere, teardown_sphere),
-		cmocka_unit_test(test_sphere_unit_normals),
-		cmocka_unit_test(test_sphere_hit_off_centre),
-		cmocka_unit_test(test_sphere_bounds_and_defaults),
-		cmocka_unit_test(test_sphere_parse),
-		cmocka_unit_test(test_sphere_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_sphere, support_drop_shape, test_sphere_hit_shrinks_t_max,
+				   test_sphere_miss_keeps_t_max, test_sphere_tangent,
+				   test_sphere_from_inside, test_sphere_t_min_respected,
+				   test_sphere_non_unit_direction),
+	     SUPPORT_TESTS(test_sphere_unit_normals, test_sphere_hit_off_centre,
+			   test_sphere_bounds_and_defaults, test_sphere_parse,
+			   test_sphere_export_pov))

@@ -408,17 +408,9 @@ static void test_shape_bounds_partial_axes(void **state)
 	scene_destroy(s);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_shape_tessellate_every_primitive),
-		cmocka_unit_test(test_shape_tessellate_sphere_grid),
-		cmocka_unit_test(test_shape_tessellate_triangle),
-		cmocka_unit_test(test_shape_tessellate_quadric_region),
-		cmocka_unit_test(test_shape_tessellate_floor_texture),
-		cmocka_unit_test(test_shape_tessellate_infinite_floor),
-		cmocka_unit_test(test_shape_tessellate_fallback),
-		cmocka_unit_test(test_shape_bounds_partial_axes),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_shape_tessellate_every_primitive,
+			   test_shape_tessellate_sphere_grid, test_shape_tessellate_triangle,
+			   test_shape_tessellate_quadric_region,
+			   test_shape_tessellate_floor_texture,
+			   test_shape_tessellate_infinite_floor, test_shape_tessellate_fallback,
+			   test_shape_bounds_partial_axes))

@@ -17,14 +17,8 @@ static const struct material mat = { { 1.0, 0.0, 0.0 }, 0.4, 0.2, 0.1, 0.3, 5.0,
  * z = 2; (b - a) x (c - a) = (4,0,0) x (0,4,0) = (0,0,16). */
 static int setup_triangle(void **state)
 {
-	*state = triangle_create(vec3_make(0, 0, 2), vec3_make(4, 0, 2), vec3_make(0, 4, 2), &mat);
-	return *state ? 0 : -1;
-}
-
-static int teardown_triangle(void **state)
-{
-	shape_destroy(*state);
-	return 0;
+	return support_hold_shape(state, triangle_create(vec3_make(0, 0, 2), vec3_make(4, 0, 2),
+							 vec3_make(0, 4, 2), &mat));
 }
 
 static void test_triangle_hit_from_both_sides(void **state)
@@ -34,11 +28,8 @@ static void test_triangle_hit_from_both_sides(void **state)
 	double t_max = INFINITY;
 
 	/* From z = 10 down to z = 2: t = 8; from z = -10 up: t = 12. */
-	assert_true(shape_intersect(*state, &down, 0.0, &t_max));
-	assert_near(t_max, 8.0, 1e-12);
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &up, 0.0, &t_max));
-	assert_near(t_max, 12.0, 1e-12);
+	assert_hit(*state, &down, 0.0, &t_max, 8.0, 1e-12);
+	assert_hit(*state, &up, 0.0, &t_max, 12.0, 1e-12);
 }
 
 static void test_triangle_edges_inclusive(void **state)
@@ -119,12 +110,9 @@ static void test_triangle_non_unit_direction(void **state)
 	double t_max = INFINITY;
 
 	/* |d| = 4: t = 8 / 4 = 2. */
-	assert_true(shape_intersect(*state, &r, 0.0, &t_max));
-	assert_near(t_max, 2.0, 1e-12);
+	assert_hit(*state, &r, 0.0, &t_max, 2.0, 1e-12);
 	/* From (-3, 1, 6) along (1, 0, -1): z = 2 at t = 4, point (1, 1, 2). */
-	t_max = INFINITY;
-	assert_true(shape_intersect(*state, &slant, 0.0, &t_max));
-	assert_near(t_max, 4.0, 1e-12);
+	assert_hit(*state, &slant, 0.0, &t_max, 4.0, 1e-12);
 }
 
 static void test_triangle_unit_normal(void **state)
@@ -224,20 +212,12 @@ static void test_triangle_export_pov(void **state)
 	shape_destroy(line);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(test_triangle_hit_from_both_sides, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_edges_inclusive, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_miss_behind_parallel, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_t_interval, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_starting_on_surface, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_non_unit_direction, setup_triangle, teardown_triangle),
-		cmocka_unit_test_setup_teardown(test_triangle_unit_normal, setup_triangle, teardown_triangle),
-		cmocka_unit_test(test_triangle_bounds),
-		cmocka_unit_test_setup_teardown(test_triangle_degenerate, setup_triangle, teardown_triangle),
-		cmocka_unit_test(test_triangle_parse),
-		cmocka_unit_test(test_triangle_export_pov),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_FIXTURE_TESTS(setup_triangle, support_drop_shape,
+				   test_triangle_hit_from_both_sides,
+				   test_triangle_edges_inclusive,
+				   test_triangle_miss_behind_parallel, test_triangle_t_interval,
+				   test_triangle_starting_on_surface,
+				   test_triangle_non_unit_direction, test_triangle_unit_normal),
+	     SUPPORT_TESTS(test_triangle_bounds),
+	     SUPPORT_FIXTURE_TESTS(setup_triangle, support_drop_shape, test_triangle_degenerate),
+	     SUPPORT_TESTS(test_triangle_parse, test_triangle_export_pov))

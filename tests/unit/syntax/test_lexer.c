@@ -394,22 +394,11 @@ static void test_lexer_simple_number_matches_general_path(void **state)
 	assert_true(taken > 20000 && taken < 180000);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_lexer_tokens_and_positions),
-		cmocka_unit_test(test_lexer_empty_input),
-		cmocka_unit_test(test_lexer_hash_comments),
-		cmocka_unit_test(test_lexer_slash_comments),
-		cmocka_unit_test(test_lexer_lone_dash_comment),
-		cmocka_unit_test(test_lexer_crlf),
-		cmocka_unit_test(test_lexer_numbers_accepted),
-		cmocka_unit_test(test_lexer_numbers_rejected),
-		cmocka_unit_test(test_lexer_number_token_too_long),
-		cmocka_unit_test(test_lexer_number_uses_token_length),
-		cmocka_unit_test(test_lexer_looks_numeric),
-		cmocka_unit_test(test_lexer_simple_numbers_match_strtod),
-		cmocka_unit_test(test_lexer_simple_number_matches_general_path),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_lexer_tokens_and_positions, test_lexer_empty_input,
+			   test_lexer_hash_comments, test_lexer_slash_comments,
+			   test_lexer_lone_dash_comment, test_lexer_crlf,
+			   test_lexer_numbers_accepted, test_lexer_numbers_rejected,
+			   test_lexer_number_token_too_long,
+			   test_lexer_number_uses_token_length, test_lexer_looks_numeric,
+			   test_lexer_simple_numbers_match_strtod,
+			   test_lexer_simple_number_matches_general_path))

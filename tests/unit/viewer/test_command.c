@@ -81,9 +81,7 @@ static void test_command_default_text(void **state)
 	char cmd[1024];
 
 	(void)state;
-	settings_init(&set);
-	set.size = 768;
-	set.recursion = 4;
+	support_settings(&set, 768, 4);
 	assert_int_equal(command_format(cmd, sizeof(cmd), "scenes/scene.txt", RT_DIALECT_AUTO,
 					&set), 0);
 	assert_string_equal(cmd, "whitted scenes/scene.txt --eye 0,-200,10 --look 0,0,0 --up 0,0,1 "
@@ -290,9 +288,7 @@ static void test_command_quotes_texture_paths(void **state)
 	wordexp_t we;
 
 	(void)state;
-	settings_init(&set);
-	set.size = 64;
-	set.recursion = 2;
+	support_settings(&set, 64, 2);
 	set.floor_texture[0] = "my tex/it's $HOME.bmp";
 	set.floor_texture[1] = "none";
 	assert_int_equal(command_format(cmd, sizeof(cmd), "a scene.txt", RT_DIALECT_AUTO, &set),
@@ -319,25 +315,13 @@ static void test_command_too_small(void **state)
 	char cmd[40];
 
 	(void)state;
-	settings_init(&set);
-	set.size = 500;
-	set.recursion = 4;
+	support_settings(&set, 500, 4);
 	assert_int_equal(command_format(cmd, sizeof(cmd), "scene.txt", RT_DIALECT_AUTO, &set),
 			 -RT_E_RANGE);
 	assert_int_equal(command_format(cmd, 9, "scene.txt", RT_DIALECT_AUTO, &set), -RT_E_RANGE);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_command_round_trips_camera),
-		cmocka_unit_test(test_command_default_text),
-		cmocka_unit_test(test_command_carries_image_options),
-		cmocka_unit_test(test_command_nearfar_round_trip),
-		cmocka_unit_test(test_command_carries_dialect_and_floor),
-		cmocka_unit_test(test_command_quotes_scene),
-		cmocka_unit_test(test_command_quotes_texture_paths),
-		cmocka_unit_test(test_command_too_small),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_command_round_trips_camera, test_command_default_text,
+			   test_command_carries_image_options, test_command_nearfar_round_trip,
+			   test_command_carries_dialect_and_floor, test_command_quotes_scene,
+			   test_command_quotes_texture_paths, test_command_too_small))

@@ -251,19 +251,12 @@ static void test_fly_camera_init_rejects_wide_aspect(void **state)
 	assert_int_equal(fly_camera_init(&c, &p, &d), -RT_E_INVALID);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_fly_camera_init_matches_camera),
-		cmocka_unit_test(test_fly_camera_init_rejects_bad_camera),
-		cmocka_unit_test(test_fly_camera_move_along_axes),
-		cmocka_unit_test(test_fly_camera_turn_directions),
-		cmocka_unit_test(test_fly_camera_full_turns_return),
-		cmocka_unit_test(test_fly_camera_orthonormal_after_many_turns),
-		cmocka_unit_test(test_fly_camera_params_rebuild_frame),
-		cmocka_unit_test(test_fly_camera_params_far_from_origin),
-		cmocka_unit_test(test_fly_camera_params_keep_near_and_aspect),
-		cmocka_unit_test(test_fly_camera_init_rejects_wide_aspect),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_fly_camera_init_matches_camera,
+			   test_fly_camera_init_rejects_bad_camera,
+			   test_fly_camera_move_along_axes, test_fly_camera_turn_directions,
+			   test_fly_camera_full_turns_return,
+			   test_fly_camera_orthonormal_after_many_turns,
+			   test_fly_camera_params_rebuild_frame,
+			   test_fly_camera_params_far_from_origin,
+			   test_fly_camera_params_keep_near_and_aspect,
+			   test_fly_camera_init_rejects_wide_aspect))

@@ -126,14 +126,7 @@ static void test_light_marker_gl_quadratic(void **state)
 	assert_near(1.0 / (1.0 + q * d2), exp(-l.falloff * d2), 1e-3);
 }
 
-int main(int argc, char **argv)
-{
-	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(test_light_marker_perpendicular_is_unit_and_normal),
-		cmocka_unit_test(test_light_marker_point_light_is_a_dot),
-		cmocka_unit_test(test_light_marker_cone_opens_at_cutoff),
-		cmocka_unit_test(test_light_marker_gl_cutoff),
-		cmocka_unit_test(test_light_marker_gl_quadratic),
-	};
-	return SUPPORT_RUN(tests, argc, argv);
-}
+SUPPORT_MAIN(SUPPORT_TESTS(test_light_marker_perpendicular_is_unit_and_normal,
+			   test_light_marker_point_light_is_a_dot,
+			   test_light_marker_cone_opens_at_cutoff, test_light_marker_gl_cutoff,
+			   test_light_marker_gl_quadratic))
