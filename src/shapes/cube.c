@@ -4,7 +4,6 @@
  * enters or, from inside, where it leaves. */
 #include <math.h>
 
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -28,20 +27,15 @@ static bool cube_intersect(const struct shape *s, const struct ray *r,
 			   double t_min, double *t_max)
 {
 	const struct cube *cu = (const struct cube *)s;
-	struct ray local = { vec3_sub(r->origin, cu->lo), r->dir };
-	double t;
 
-	if (!solve_ray_convex(&local, cu->face, CUBE_FACES, t_min, *t_max, &t))
-		return false;
-	*t_max = t;
-	return true;
+	return solve_convex_hit(r, cu->lo, cu->face, CUBE_FACES, t_min, t_max);
 }
 
 static struct vec3 cube_normal(const struct shape *s, struct vec3 p)
 {
 	const struct cube *cu = (const struct cube *)s;
 
-	return cu->face[solve_convex_face(cu->face, CUBE_FACES, vec3_sub(p, cu->lo))].n;
+	return solve_convex_normal(cu->lo, cu->face, CUBE_FACES, p);
 }
 
 static bool cube_bounds(const struct shape *s, struct aabb *out)
@@ -73,10 +67,7 @@ static int cube_export_pov(const struct shape *s, FILE *out, const struct pov_op
 	pov_write_vector(out, cu->lo.x, cu->lo.y, cu->lo.z);
 	fputs(", ", out);
 	pov_write_vector(out, cu->hi.x, cu->hi.y, cu->hi.z);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
+	return shape_pov_finish(s, out, opt);
 }
 
 /* The box's twelve triangles, normals outwards. */
@@ -92,11 +83,6 @@ static int cube_tessellate(const struct shape *s, const struct mesh_options *opt
 	return mesh_box(out, box);
 }
 
-static void cube_destroy(struct shape *s)
-{
-	rt_free(s);
-}
-
 static int cube_parse(struct parser *p, struct shape **out);
 
 const struct shape_ops cube_ops = {
@@ -106,7 +92,7 @@ const struct shape_ops cube_ops = {
 	.intersect = cube_intersect,
 	.normal = cube_normal,
 	.export_pov = cube_export_pov,
-	.destroy = cube_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = cube_bounds,
 	.degenerate = cube_degenerate,
 	.tessellate = cube_tessellate,
@@ -115,14 +101,12 @@ const struct shape_ops cube_ops = {
 
 struct shape *cube_create(struct vec3 corner, double side, const struct material *m)
 {
-	struct cube *cu = rt_malloc(sizeof(*cu));
+	struct cube *cu = shape_alloc(sizeof(*cu), &cube_ops, m);
 	struct vec3 e;
 	int axis;
 
 	if (!cu)
 		return NULL;
-	cu->base.ops = &cube_ops;
-	cu->base.mat = *m;
 	cu->lo = corner;
 	cu->hi = vec3_make(corner.x + side, corner.y + side, corner.z + side);
 	e = vec3_sub(cu->hi, cu->lo);
@@ -138,22 +122,5 @@ struct shape *cube_create(struct vec3 corner, double side, const struct material
 
 static int cube_parse(struct parser *p, struct shape **out)
 {
-	struct material m;
-	struct vec3 corner;
-	double side;
-	int rc;
-
-	*out = NULL;
-	if ((rc = parser_vec3(p, "cube corner", &corner)) < 0)
-		return rc;
-	if ((rc = parser_number(p, "cube side", &side)) < 0)
-		return rc;
-	if (!(side > 0.0))
-		return parser_fail(p, RT_E_RANGE, "cube side must be > 0, found %g", side);
-	if (side > 1e150)
-		return parser_fail(p, RT_E_RANGE, "cube side is too large (%g)", side);
-	if ((rc = parser_material(p, &m)) < 0)
-		return rc;
-	*out = cube_create(corner, side, &m);
-	return *out ? 0 : parser_fail(p, RT_E_NOMEM, "out of memory");
+	return shape_parse_point_size(p, "cube corner", "cube side", cube_create, out);
 }

@@ -289,11 +289,9 @@ struct shape *floor_create_view(double width, double cell, const struct material
 	struct floor *fl;
 
 	assert(width > 0.0 && cell > 0.0);
-	fl = rt_malloc(sizeof(*fl));
+	fl = shape_alloc(sizeof(*fl), width == INFINITY ? &floor_infinite_ops : &floor_ops, m);
 	if (!fl)
 		return NULL;
-	fl->base.ops = width == INFINITY ? &floor_infinite_ops : &floor_ops;
-	fl->base.mat = *m;
 	fl->base.mat.color = color_make(1.0, 1.0, 1.0);
 	fl->half = 0.5 * width;
 	fl->cell = cell;

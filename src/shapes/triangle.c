@@ -1,5 +1,4 @@
 /* The triangle, hit from both sides (Moller-Trumbore). */
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -103,15 +102,7 @@ static int triangle_export_pov(const struct shape *s, FILE *out, const struct po
 	pov_write_vector(out, v1.x, v1.y, v1.z);
 	fputs(", ", out);
 	pov_write_vector(out, v2.x, v2.y, v2.z);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
-static void triangle_destroy(struct shape *s)
-{
-	rt_free(s);
+	return shape_pov_finish(s, out, opt);
 }
 
 static int triangle_parse(struct parser *p, struct shape **out);
@@ -141,7 +132,7 @@ const struct shape_ops triangle_ops = {
 	.normal = triangle_normal,
 	.normal_packet = triangle_normal_packet,
 	.export_pov = triangle_export_pov,
-	.destroy = triangle_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = triangle_bounds,
 	.degenerate = triangle_degenerate,
 	.tessellate = triangle_tessellate,
@@ -150,12 +141,10 @@ const struct shape_ops triangle_ops = {
 struct shape *triangle_create(struct vec3 a, struct vec3 b, struct vec3 c,
 			      const struct material *m)
 {
-	struct triangle *tr = rt_malloc(sizeof(*tr));
+	struct triangle *tr = shape_alloc(sizeof(*tr), &triangle_ops, m);
 
 	if (!tr)
 		return NULL;
-	tr->base.ops = &triangle_ops;
-	tr->base.mat = *m;
 	tr->v0 = a;
 	tr->e1 = vec3_sub(b, a);
 	tr->e2 = vec3_sub(c, a);

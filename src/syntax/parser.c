@@ -181,6 +181,17 @@ int parser_positive(struct parser *p, const char *what, double *out)
 	return 0;
 }
 
+int parser_size(struct parser *p, const char *what, double *out)
+{
+	int rc = parser_positive(p, what, out);
+
+	if (rc < 0)
+		return rc;
+	if (*out > 1e150)
+		return parser_fail(p, RT_E_RANGE, "%s is too large (%g)", what, *out);
+	return 0;
+}
+
 int parser_material(struct parser *p, struct material *m)
 {
 	int rc;
