@@ -11,32 +11,15 @@
 #include "whitted/scene.h"
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
-#include "shapes/solve.h"
+#include "shapes/convex.h"
 
 enum { CUBE_FACES = 6 };
 
+/* The planes relative to lo (solid.at): -x, +x, -y, +y, -z, +z. */
 struct cube {
-	struct shape base;
+	struct convex_solid solid;
 	struct vec3 lo, hi;
-	/* Relative to lo, with unit normals pointing out: -x, +x, -y, +y, -z,
-	 * +z. */
-	struct solve_plane face[CUBE_FACES];
 };
-
-static bool cube_intersect(const struct shape *s, const struct ray *r,
-			   double t_min, double *t_max)
-{
-	const struct cube *cu = (const struct cube *)s;
-
-	return solve_convex_hit(r, cu->lo, cu->face, CUBE_FACES, t_min, t_max);
-}
-
-static struct vec3 cube_normal(const struct shape *s, struct vec3 p)
-{
-	const struct cube *cu = (const struct cube *)s;
-
-	return solve_convex_normal(cu->lo, cu->face, CUBE_FACES, p);
-}
 
 static bool cube_bounds(const struct shape *s, struct aabb *out)
 {
@@ -89,8 +72,8 @@ const struct shape_ops cube_ops = {
 	.keyword = "cube",
 	.dialects = RT_DIALECT_BIT(RT_DIALECT_NEARFAR),
 	.parse = cube_parse,
-	.intersect = cube_intersect,
-	.normal = cube_normal,
+	.intersect = convex_intersect,
+	.normal = convex_normal,
 	.export_pov = cube_export_pov,
 	.destroy = shape_destroy_block,
 	.bounds = cube_bounds,
@@ -109,15 +92,17 @@ struct shape *cube_create(struct vec3 corner, double side, const struct material
 		return NULL;
 	cu->lo = corner;
 	cu->hi = vec3_make(corner.x + side, corner.y + side, corner.z + side);
+	cu->solid.at = cu->lo;
+	cu->solid.faces = CUBE_FACES;
 	e = vec3_sub(cu->hi, cu->lo);
 	for (axis = 0; axis < 3; axis++) {
 		struct vec3 n = vec3_make(axis == 0, axis == 1, axis == 2);
-		cu->face[2 * axis].n = vec3_neg(n);
-		cu->face[2 * axis].d = 0.0;
-		cu->face[2 * axis + 1].n = n;
-		cu->face[2 * axis + 1].d = vec3_component(e, axis);
+		cu->solid.face[2 * axis].n = vec3_neg(n);
+		cu->solid.face[2 * axis].d = 0.0;
+		cu->solid.face[2 * axis + 1].n = n;
+		cu->solid.face[2 * axis + 1].d = vec3_component(e, axis);
 	}
-	return &cu->base;
+	return &cu->solid.base;
 }
 
 static int cube_parse(struct parser *p, struct shape **out)

@@ -16,17 +16,16 @@
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
 #include "syntax/parser_impl.h"
-#include "shapes/solve.h"
+#include "shapes/convex.h"
 
 enum { PYRAMID_FACES = 5 };
 
+/* The planes relative to the apex (solid.at): the base, then the sides
+ * facing -x, +x, -y, +y. */
 struct pyramid {
-	struct shape base;
+	struct convex_solid solid;
 	struct vec3 lo, hi;		/* the base's corners, both at the base's height */
 	struct vec3 apex;
-	/* Relative to the apex, with unit normals pointing out: the base,
-	 * then the sides facing -x, +x, -y, +y. */
-	struct solve_plane face[PYRAMID_FACES];
 };
 
 /* The unit outward normal n and offset d of n . q <= d, in coordinates q
@@ -63,27 +62,14 @@ static struct shape *pyramid_new(const struct shape_ops *ops, struct vec3 lo, st
 	py->lo = lo;
 	py->hi = hi;
 	py->apex = apex;
-	py->face[0] = pyramid_plane(0.0, 0.0, -1.0, h);
-	py->face[1] = pyramid_plane(-h, 0.0, apex.x - lo.x, 0.0);
-	py->face[2] = pyramid_plane(h, 0.0, hi.x - apex.x, 0.0);
-	py->face[3] = pyramid_plane(0.0, -h, apex.y - lo.y, 0.0);
-	py->face[4] = pyramid_plane(0.0, h, hi.y - apex.y, 0.0);
-	return &py->base;
-}
-
-static bool pyramid_intersect(const struct shape *s, const struct ray *r,
-			      double t_min, double *t_max)
-{
-	const struct pyramid *py = (const struct pyramid *)s;
-
-	return solve_convex_hit(r, py->apex, py->face, PYRAMID_FACES, t_min, t_max);
-}
-
-static struct vec3 pyramid_normal(const struct shape *s, struct vec3 p)
-{
-	const struct pyramid *py = (const struct pyramid *)s;
-
-	return solve_convex_normal(py->apex, py->face, PYRAMID_FACES, p);
+	py->solid.at = apex;
+	py->solid.faces = PYRAMID_FACES;
+	py->solid.face[0] = pyramid_plane(0.0, 0.0, -1.0, h);
+	py->solid.face[1] = pyramid_plane(-h, 0.0, apex.x - lo.x, 0.0);
+	py->solid.face[2] = pyramid_plane(h, 0.0, hi.x - apex.x, 0.0);
+	py->solid.face[3] = pyramid_plane(0.0, -h, apex.y - lo.y, 0.0);
+	py->solid.face[4] = pyramid_plane(0.0, h, hi.y - apex.y, 0.0);
+	return &py->solid.base;
 }
 
 static bool pyramid_bounds(const struct shape *s, struct aabb *out)
@@ -161,7 +147,7 @@ static int pyramid_tessellate(const struct shape *s, const struct mesh_options *
 	pyramid_corners(py, v);
 	for (i = 0; i < 6; i++) {
 		const int *tri = pyramid_triangles[i];
-		const struct vec3 n = py->face[tri[3]].n;
+		const struct vec3 n = py->solid.face[tri[3]].n;
 		const struct vec3 p[3] = { v[tri[0]], v[tri[1]], v[tri[2]] };
 		const struct vec3 normals[3] = { n, n, n };
 		if ((rc = mesh_add_triangle(out, p, normals)) < 0)
@@ -177,8 +163,8 @@ static int pyramid_centred_parse(struct parser *p, struct shape **out);
  * initialise one static table from another. */
 #define PYRAMID_METHODS                            \
 	.keyword = "pyramid",                      \
-	.intersect = pyramid_intersect,            \
-	.normal = pyramid_normal,                  \
+	.intersect = convex_intersect,             \
+	.normal = convex_normal,                   \
 	.export_pov = pyramid_export_pov,          \
 	.destroy = shape_destroy_block,            \
 	.bounds = pyramid_bounds,                  \

@@ -61,6 +61,20 @@ const struct image *floor_texture(const struct shape *s, int k);
  * shape) with its ops and material set, the rest uninitialised; NULL when
  * out of memory. */
 void *shape_alloc(size_t size, const struct shape_ops *ops, const struct material *m);
+/* The normal_packet of a shape whose normal is the same everywhere: v
+ * into each active lane of n. */
+static inline void shape_normal_fill(uint32_t active, struct vec3 v, double *const n[3])
+{
+	int i;
+
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		if (!(active >> i & 1))
+			continue;
+		n[0][i] = v.x;
+		n[1][i] = v.y;
+		n[2][i] = v.z;
+	}
+}
 /* The destroy method of the shapes that own nothing outside their own
  * block of rt_malloc. */
 void shape_destroy_block(struct shape *s);

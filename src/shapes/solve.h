@@ -44,27 +44,5 @@ bool solve_ray_convex(const struct ray *r, const struct solve_plane *planes, int
  * either of the two. */
 int solve_convex_face(const struct solve_plane *planes, int n, struct vec3 p);
 
-/* The intersect and normal methods of a convex solid whose planes are
- * placed relative to the point `at` (a corner or the apex, so that their
- * d stay small and exact): the ray's origin and p are moved there first.
- * On a hit, *t_max becomes the t. */
-static inline bool solve_convex_hit(const struct ray *r, struct vec3 at,
-				    const struct solve_plane *planes, int n,
-				    double t_min, double *t_max)
-{
-	struct ray local = { vec3_sub(r->origin, at), r->dir };
-	double t;
-
-	if (!solve_ray_convex(&local, planes, n, t_min, *t_max, &t))
-		return false;
-	*t_max = t;
-	return true;
-}
-
-static inline struct vec3 solve_convex_normal(struct vec3 at, const struct solve_plane *planes,
-					      int n, struct vec3 p)
-{
-	return planes[solve_convex_face(planes, n, vec3_sub(p, at))].n;
-}
 
 #endif

@@ -55,17 +55,8 @@ static struct vec3 triangle_normal(const struct shape *s, struct vec3 p)
 static void triangle_normal_packet(const struct shape *s, const double *const p[3],
 				   uint32_t active, double *const n[3])
 {
-	struct vec3 v = triangle_unit_normal((const struct triangle *)s);
-	int i;
-
 	(void)p;
-	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
-		if (!(active >> i & 1))
-			continue;
-		n[0][i] = v.x;
-		n[1][i] = v.y;
-		n[2][i] = v.z;
-	}
+	shape_normal_fill(active, triangle_unit_normal((const struct triangle *)s), n);
 }
 
 static bool triangle_bounds(const struct shape *s, struct aabb *out)
