@@ -6,6 +6,9 @@
 # of the accel API or of the shading that the reference does not follow is
 # caught here, not first by `make bench`.  Needs libembree-dev (make deps).
 set -u
+CHECK=embreecheck
+# shellcheck source=bench/check_counts.sh
+. "$(dirname "$0")/check_counts.sh"
 BUILD=${BUILD:-build}
 if [ ! -f /usr/include/embree3/rtcore.h ]; then
 	echo "embreecheck: NOT RUN: libembree-dev is not installed (make deps installs it); nothing was compared"
@@ -18,7 +21,6 @@ make --no-print-directory -s "$BUILD/whitted-embree" >/dev/null || {
 }
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
 "$BUILD/gen_scene" 300 >"$T/surface-300.txt"
 "$BUILD/gen_scene" 5000 >"$T/surface-5000.txt"
 "$BUILD/gen_scene" --layout cloud 3000 >"$T/cloud-3000.txt"
@@ -27,13 +29,9 @@ check() {
 	shift
 	if ! "$BUILD/whitted" -q -o "$T/w.ppm" "$@" 2>"$T/err" ||
 		! "$BUILD/whitted-embree" -q -o "$T/e.ppm" "$@" 2>>"$T/err"; then
-		echo "embreecheck: $what: a render fails: $(head -3 "$T/err")"
-		fail=$((fail + 1))
-	elif cmp -s "$T/w.ppm" "$T/e.ppm"; then
-		pass=$((pass + 1))
+		failed "$what: a render fails: $(head -3 "$T/err")"
 	else
-		echo "embreecheck: $what: Embree's image differs from whitted's"
-		fail=$((fail + 1))
+		same "$T/w.ppm" "$T/e.ppm" "$what: Embree's image differs from whitted's"
 	fi
 }
 for p in 0 1 default; do

@@ -12,12 +12,14 @@
 # hide a crash of one build and leave the other unchecked).
 # Usage: portablecheck.sh WHITTED PORTABLE_WHITTED
 set -u
+CHECK=portablecheck
+# shellcheck source=bench/check_counts.sh
+. "$(dirname "$0")/check_counts.sh"
 BUILD=${BUILD:-build}
 W=$1
 P=$2
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
 : >"$T/walks"
 # Runs a command that writes image $2, and counts whether it ran and gave
 # the default build's image ($T/sse.ppm) byte for byte; its stderr is
@@ -26,13 +28,9 @@ same_as_default() {
 	what=$1 out=$2
 	shift 2
 	if ! "$@" 2>"$T/err"; then
-		echo "portablecheck: $scene -j $j: $what fails: $(head -3 "$T/err")"
-		fail=$((fail + 1))
-	elif cmp -s "$T/sse.ppm" "$out"; then
-		pass=$((pass + 1))
+		failed "$scene -j $j: $what fails: $(head -3 "$T/err")"
 	else
-		echo "portablecheck: $scene -j $j: $what gives another image than the default build"
-		fail=$((fail + 1))
+		same "$T/sse.ppm" "$out" "$scene -j $j: $what gives another image than the default build"
 	fi
 }
 "$BUILD/gen_scene" 12000 >"$T/surface.txt"
@@ -40,8 +38,7 @@ same_as_default() {
 for scene in scenes/*.txt tests/scenes/*.txt "$T/surface.txt" "$T/cloud.txt"; do
 	for j in 1 3; do
 		if ! "$W" -q -j $j -s 96 -o "$T/sse.ppm" "$scene" 2>"$T/err"; then
-			echo "portablecheck: $scene -j $j: the SSE2 build fails: $(head -3 "$T/err")"
-			fail=$((fail + 1))
+			failed "$scene -j $j: the SSE2 build fails: $(head -3 "$T/err")"
 			continue
 		fi
 		same_as_default "the portable build" "$T/portable.ppm" \
@@ -74,8 +71,7 @@ far="--eye 0,-1e17,20 --look 0,0,20 --fov 6e-14"
 for j in 1 2; do
 	# shellcheck disable=SC2086
 	if ! "$W" -q -j $j -s 48 $far -o "$T/sse.ppm" "$scene" 2>"$T/err"; then
-		echo "portablecheck: $scene (far eye) -j $j: the SSE2 build fails: $(head -3 "$T/err")"
-		fail=$((fail + 1))
+		failed "$scene (far eye) -j $j: the SSE2 build fails: $(head -3 "$T/err")"
 		continue
 	fi
 	# shellcheck disable=SC2086
@@ -102,14 +98,12 @@ for how in "WHITTED_PACKETS=0" "WHITTED_PACKETS=" "WHITTED_PACKETS=1" \
 	env $how "$W" -q --stats -s 200 -o "$T/plane$k.ppm" "$scene" 2>&1 |
 		sed -n 's/^rays: *\(.*\), [0-9.]* M rays\/s$/\1/p' >"$T/rays$k"
 	if [ ! -s "$T/rays$k" ]; then
-		echo "portablecheck: $scene under $how: no ray counts"
-		fail=$((fail + 1))
+		failed "$scene under $how: no ray counts"
 	elif [ $k -gt 1 ]; then
 		if cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" && cmp -s "$T/rays1" "$T/rays$k"; then
 			pass=$((pass + 1))
 		else
-			echo "portablecheck: $scene under $how: $(cat "$T/rays$k"), one ray at a time $(cat "$T/rays1")$(cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" || echo ', another image')"
-			fail=$((fail + 1))
+			failed "$scene under $how: $(cat "$T/rays$k"), one ray at a time $(cat "$T/rays1")$(cmp -s "$T/plane1.ppm" "$T/plane$k.ppm" || echo ', another image')"
 		fi
 	fi
 done

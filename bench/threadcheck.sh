@@ -16,11 +16,13 @@
 # gate) and a merge of --region renders cut off the 16-pixel grid (so
 # every block falls elsewhere).
 set -u
+CHECK=threadcheck
+# shellcheck source=bench/check_counts.sh
+. "$(dirname "$0")/check_counts.sh"
 BUILD=${BUILD:-build}
 W=$BUILD/whitted
 T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
-pass=0 fail=0
 "$BUILD/gen_scene" 300 >"$T/gen.txt"
 "$BUILD/gen_scene" 12000 >"$T/gen12k.txt"
 for case in "scenes/scene.txt -s 203" "scenes/scene.txt -s 97" "$T/gen.txt -s 61" \
@@ -28,18 +30,10 @@ for case in "scenes/scene.txt -s 203" "scenes/scene.txt -s 97" "$T/gen.txt -s 61
 	set -- $case
 	for j in 1 2 3 7; do
 		if ! "$W" -q -j $j -o "$T/j$j.ppm" "$@"; then
-			echo "threadcheck: whitted failed: -j $j $case"
-			fail=$((fail + 1))
+			failed "whitted failed: -j $j $case"
 			continue
 		fi
-		if [ $j -ne 1 ]; then
-			if cmp -s "$T/j1.ppm" "$T/j$j.ppm"; then
-				pass=$((pass + 1))
-			else
-				echo "threadcheck: -j $j differs from -j 1: $case"
-				fail=$((fail + 1))
-			fi
-		fi
+		[ "$j" -eq 1 ] || same "$T/j1.ppm" "$T/j$j.ppm" "-j $j differs from -j 1: $case"
 	done
 done
 # The PNG file too: with as many threads as processors or more, the
@@ -50,14 +44,7 @@ done
 np=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)
 for j in 1 2 3 7 $np; do
 	"$W" -q -j $j -s 203 -o "$T/p$j.png" scenes/scene.txt || echo "threadcheck: PNG -j $j failed"
-	if [ $j -ne 1 ]; then
-		if cmp -s "$T/p1.png" "$T/p$j.png"; then
-			pass=$((pass + 1))
-		else
-			echo "threadcheck: the PNG of -j $j differs from -j 1's"
-			fail=$((fail + 1))
-		fi
-	fi
+	[ "$j" -eq 1 ] || same "$T/p1.png" "$T/p$j.png" "the PNG of -j $j differs from -j 1's"
 done
 # A strip of the PNG may be compressed only once the band above it is
 # final too (its filter reads that band's last row).  Bands finish in
@@ -98,37 +85,29 @@ bj=$np
 if "$W" -q -j 1 --no-floor -o "$T/band1.png" "$T/band.txt"; then
 	for k in 1 2 3; do
 		"$W" -q -j $bj --no-floor -o "$T/bandj.png" "$T/band.txt"
-		if cmp -s "$T/band1.png" "$T/bandj.png"; then
-			pass=$((pass + 1))
-		else
-			echo "threadcheck: a PNG whose second band is final before the first differs (-j $bj, run $k)"
-			fail=$((fail + 1))
-		fi
+		same "$T/band1.png" "$T/bandj.png" \
+			"a PNG whose second band is final before the first differs (-j $bj, run $k)"
 	done
 else
-	echo "threadcheck: whitted failed on the two-band scene"
-	fail=$((fail + 1))
+	failed "whitted failed on the two-band scene"
 fi
 # The 203-pixel course scene with 1 and 7 threads against the reference
 # renderer, and against the merge of nine regions whose edges (5, 101 and
 # 7, 150) lie off the block grid.
 "$W" -q -j 1 -s 203 -o "$T/full1.ppm" scenes/scene.txt &&
 	"$W" -q -j 7 -s 203 -o "$T/full7.ppm" scenes/scene.txt || {
-	echo "threadcheck: whitted failed on scenes/scene.txt -s 203"
-	fail=$((fail + 1))
+	failed "whitted failed on scenes/scene.txt -s 203"
 }
 if python3 tests/reference/ref_render.py scenes/scene.txt "$T/ref.ppm" --size 203; then
 	for j in 1 7; do
 		if "$BUILD/imgcmp" "$T/full$j.ppm" "$T/ref.ppm" >"$T/cmp.txt" 2>&1; then
 			pass=$((pass + 1))
 		else
-			echo "threadcheck: -j $j at 203 differs from the reference renderer: $(cat "$T/cmp.txt")"
-			fail=$((fail + 1))
+			failed "-j $j at 203 differs from the reference renderer: $(cat "$T/cmp.txt")"
 		fi
 	done
 else
-	echo "threadcheck: the reference renderer (python3 tests/reference/ref_render.py) failed"
-	fail=$((fail + 1))
+	failed "the reference renderer (python3 tests/reference/ref_render.py) failed"
 fi
 n=0
 for y in 0,7 7,150 150,203; do
@@ -141,8 +120,7 @@ done
 if "$W" merge -o "$T/merged.ppm" "$T"/r?.png 2>"$T/merge.err" && cmp -s "$T/merged.ppm" "$T/full1.ppm"; then
 	pass=$((pass + 1))
 else
-	echo "threadcheck: nine regions off the block grid, merged, differ from the full render $(cat "$T/merge.err")"
-	fail=$((fail + 1))
+	failed "nine regions off the block grid, merged, differ from the full render $(cat "$T/merge.err")"
 fi
 # The 12k file (over 1 MiB) is read in parts by several threads, and its
 # tree built by several: helgrind looks for races there, memcheck for
@@ -153,30 +131,30 @@ VG_RUNS=5
 vg_ran=0
 skipped=0 why=""
 if command -v valgrind >/dev/null 2>&1; then
-	for tool in "--tool=helgrind" "--tool=memcheck --leak-check=full --errors-for-leak-kinds=all"; do
+	# valgrind_run TOOL WHERE ARGS...: valgrind TOOL (its options, split
+	# on spaces) on whitted ARGS; WHERE says what ran in the message of a
+	# failure.
+	valgrind_run() {
+		tool=$1 where=$2
+		shift 2
 		vg_ran=$((vg_ran + 1))
 		# shellcheck disable=SC2086
-		if valgrind $tool -q --error-exitcode=9 "$W" -q -j 3 -s 16 -o "$T/vg.ppm" \
-			"$T/gen12k.txt" 2>"$T/vg.err"; then
+		if valgrind $tool -q --error-exitcode=9 "$W" -q "$@" 2>"$T/vg.err"; then
 			pass=$((pass + 1))
 		else
-			echo "threadcheck: valgrind $tool reports:"
+			echo "threadcheck: valgrind $tool reports$where:"
 			cat "$T/vg.err"
 			fail=$((fail + 1))
 		fi
+	}
+	for tool in "--tool=helgrind" "--tool=memcheck --leak-check=full --errors-for-leak-kinds=all"; do
+		valgrind_run "$tool" "" -j 3 -s 16 -o "$T/vg.ppm" "$T/gen12k.txt"
 	done
 	# helgrind_png WHAT THREADS SIZE [SCENE]: helgrind on a PNG of the
 	# course scene (or SCENE).
 	helgrind_png() {
-		vg_ran=$((vg_ran + 1))
-		if valgrind --tool=helgrind -q --error-exitcode=9 "$W" -q -j "$2" -s "$3" \
-			-o "$T/vg.png" "${4:-scenes/scene.txt}" 2>"$T/vg.err"; then
-			pass=$((pass + 1))
-		else
-			echo "threadcheck: valgrind --tool=helgrind reports on the PNG $1:"
-			cat "$T/vg.err"
-			fail=$((fail + 1))
-		fi
+		valgrind_run --tool=helgrind " on the PNG $1" -j "$2" -s "$3" -o "$T/vg.png" \
+			"${4:-scenes/scene.txt}"
 	}
 	# The PNG compressed during the render, three strips on three threads
 	# (or on one a processor, where there are more).

@@ -166,7 +166,6 @@ static int cylinder_parse(struct parser *p, struct shape **out)
 {
 	struct cylinder *c;
 	struct vec3 a, b, d;
-	struct material m;
 	double radius, length;
 	int rc;
 
@@ -188,12 +187,9 @@ static int cylinder_parse(struct parser *p, struct shape **out)
 		return host->fail(p, RT_E_RANGE,
 				  "cylinder radius must be > 0, with a square that is finite and not 0 (about 1e-154 to 1e154), found %g",
 				  radius);
-	if ((rc = host->material(p, &m)) < 0)
+	c = (struct cylinder *)whitted_plugin_new_shape(host, p, &cylinder_ops, sizeof(*c), &rc);
+	if (!c)
 		return rc;
-	if (!(c = host->alloc(sizeof(*c))))
-		return host->fail(p, RT_E_NOMEM, "out of memory");
-	c->base.ops = &cylinder_ops;
-	c->base.mat = m;
 	c->a = a;
 	c->b = b;
 	c->axis = vec3_scale(d, 1.0 / length);
@@ -201,13 +197,6 @@ static int cylinder_parse(struct parser *p, struct shape **out)
 	c->radius = radius;
 	*out = &c->base;
 	return 0;
-}
-
-/* Glass through it is exact: the capped cylinder bounds a solid. */
-static bool cylinder_closed(const struct shape *s)
-{
-	(void)s;
-	return true;
 }
 
 static const struct shape_ops cylinder_ops = {
@@ -219,7 +208,8 @@ static const struct shape_ops cylinder_ops = {
 	.destroy = cylinder_destroy,
 	.bounds = cylinder_bounds,
 	.tessellate = cylinder_tessellate,
-	.closed = cylinder_closed,
+	/* Glass through it is exact: the capped cylinder bounds a solid. */
+	.closed = whitted_plugin_closed_always,
 };
 
 static const struct shape_ops *const cylinder_shapes[] = { &cylinder_ops, NULL };
@@ -228,8 +218,5 @@ int whitted_plugin_init(const struct whitted_plugin_host *h)
 {
 	static const struct whitted_plugin plugin = { "cylinder", "1.0", cylinder_shapes };
 
-	if (h->abi != WHITTED_PLUGIN_ABI || h->size < sizeof(*h))
-		return -RT_E_INVALID;
-	host = h;
-	return h->register_plugin(h, &plugin);
+	return whitted_plugin_start(h, &host, &plugin);
 }

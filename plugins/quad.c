@@ -186,7 +186,6 @@ static int quad_parse(struct parser *p, struct shape **out)
 {
 	struct quad *q;
 	struct vec3 v[4];
-	struct material m;
 	int rc, i, j;
 
 	*out = NULL;
@@ -197,12 +196,9 @@ static int quad_parse(struct parser *p, struct shape **out)
 		for (j = i + 1; j < 4; j++)
 			if (!vec3_is_finite(vec3_sub(v[i], v[j])))
 				return host->fail(p, RT_E_RANGE, "quad corners are too far apart");
-	if ((rc = host->material(p, &m)) < 0)
+	q = (struct quad *)whitted_plugin_new_shape(host, p, &quad_ops, sizeof(*q), &rc);
+	if (!q)
 		return rc;
-	if (!(q = host->alloc(sizeof(*q))))
-		return host->fail(p, RT_E_NOMEM, "out of memory");
-	q->base.ops = &quad_ops;
-	q->base.mat = m;
 	for (i = 0; i < 4; i++)
 		q->v[i] = v[i];
 	q->n[0] = quad_unit_normal(v[0], v[1], v[2]);
@@ -230,8 +226,5 @@ int whitted_plugin_init(const struct whitted_plugin_host *h)
 {
 	static const struct whitted_plugin plugin = { "quad", "1.0", quad_shapes };
 
-	if (h->abi != WHITTED_PLUGIN_ABI || h->size < sizeof(*h))
-		return -RT_E_INVALID;
-	host = h;
-	return h->register_plugin(h, &plugin);
+	return whitted_plugin_start(h, &host, &plugin);
 }

@@ -291,7 +291,6 @@ static int torus_parse(struct parser *p, struct shape **out)
 {
 	struct torus *tr;
 	struct vec3 centre, axis, helper;
-	struct material m;
 	double major, minor;
 	int rc;
 
@@ -316,12 +315,9 @@ static int torus_parse(struct parser *p, struct shape **out)
 		return host->fail(p, RT_E_RANGE,
 				  "torus minor radius must be > 0 and below the major radius %g (a ring torus), found %g",
 				  major, minor);
-	if ((rc = host->material(p, &m)) < 0)
+	tr = (struct torus *)whitted_plugin_new_shape(host, p, &torus_ops, sizeof(*tr), &rc);
+	if (!tr)
 		return rc;
-	if (!(tr = host->alloc(sizeof(*tr))))
-		return host->fail(p, RT_E_NOMEM, "out of memory");
-	tr->base.ops = &torus_ops;
-	tr->base.mat = m;
 	tr->centre = centre;
 	tr->w = axis;
 	helper = fabs(axis.x) < 0.9 ? vec3_make(1.0, 0.0, 0.0) : vec3_make(0.0, 1.0, 0.0);
@@ -333,13 +329,6 @@ static int torus_parse(struct parser *p, struct shape **out)
 	return 0;
 }
 
-/* Glass through it is exact: a torus bounds a solid ring. */
-static bool torus_closed(const struct shape *s)
-{
-	(void)s;
-	return true;
-}
-
 static const struct shape_ops torus_ops = {
 	.keyword = "torus",
 	.parse = torus_parse,
@@ -349,7 +338,8 @@ static const struct shape_ops torus_ops = {
 	.destroy = torus_destroy,
 	.bounds = torus_bounds,
 	.tessellate = torus_tessellate,
-	.closed = torus_closed,
+	/* Glass through it is exact: a torus bounds a solid ring. */
+	.closed = whitted_plugin_closed_always,
 };
 
 static const struct shape_ops *const torus_shapes[] = { &torus_ops, NULL };
@@ -358,8 +348,5 @@ int whitted_plugin_init(const struct whitted_plugin_host *h)
 {
 	static const struct whitted_plugin plugin = { "torus", "1.0", torus_shapes };
 
-	if (h->abi != WHITTED_PLUGIN_ABI || h->size < sizeof(*h))
-		return -RT_E_INVALID;
-	host = h;
-	return h->register_plugin(h, &plugin);
+	return whitted_plugin_start(h, &host, &plugin);
 }

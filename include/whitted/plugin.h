@@ -175,4 +175,53 @@ struct whitted_plugin_host {
 extern const unsigned whitted_plugin_abi;
 int whitted_plugin_init(const struct whitted_plugin_host *host);
 
+/* Helpers for the steps every plugin takes the same way, inline so that
+ * they are compiled into the plugin against the header it was built with
+ * (and so need no symbol of the host's).
+ *
+ * The body of a usual whitted_plugin_init: refuses a host of another ABI
+ * or a smaller table with -RT_E_INVALID, otherwise keeps h in *keep for
+ * the shapes' methods and registers plugin, returning what that returns. */
+static inline int whitted_plugin_start(const struct whitted_plugin_host *h,
+				       const struct whitted_plugin_host **keep,
+				       const struct whitted_plugin *plugin)
+{
+	if (h->abi != WHITTED_PLUGIN_ABI || h->size < sizeof(*h))
+		return -RT_E_INVALID;
+	*keep = h;
+	return h->register_plugin(h, plugin);
+}
+
+/* The end of a usual parse: reads the material, then allocates a shape of
+ * size bytes (a struct whose first member is its struct shape) with ops
+ * and that material, the rest for the caller to fill in.  NULL with *rc
+ * the error (the message filled in) when the material does not read or
+ * memory runs out; otherwise *rc is 0. */
+static inline struct shape *whitted_plugin_new_shape(const struct whitted_plugin_host *h,
+						     struct parser *p,
+						     const struct shape_ops *ops,
+						     size_t size, int *rc)
+{
+	struct material m;
+	struct shape *s;
+
+	if ((*rc = h->material(p, &m)) < 0)
+		return NULL;
+	if (!(s = (struct shape *)h->alloc(size))) {
+		*rc = h->fail(p, RT_E_NOMEM, "out of memory");
+		return NULL;
+	}
+	s->ops = ops;
+	s->mat = m;
+	*rc = 0;
+	return s;
+}
+
+/* The closed method of a shape that always bounds a solid. */
+static inline bool whitted_plugin_closed_always(const struct shape *s)
+{
+	(void)s;
+	return true;
+}
+
 #endif

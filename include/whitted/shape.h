@@ -203,16 +203,14 @@ static inline struct color shape_color_at(const struct shape *s, struct vec3 p)
 	return s->ops->color_at ? s->ops->color_at(s, p) : s->mat.color;
 }
 
-/* See color_packet: the material colour where the shape has no color_at. */
-static inline void shape_color_packet(const struct shape *s, const double *const p[3],
-				      uint32_t active, double *const c[3])
+/* shape_color_at point by point over the active lanes: the fallback of
+ * shape_color_packet, and of a color_packet for the points it has no
+ * faster way for. */
+static inline void shape_color_lanes(const struct shape *s, const double *const p[3],
+				     uint32_t active, double *const c[3])
 {
 	int i;
 
-	if (s->ops->color_at && s->ops->color_packet) {
-		s->ops->color_packet(s, p, active, c);
-		return;
-	}
 	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
 		struct color v;
 		if (!(active >> i & 1))
@@ -222,6 +220,17 @@ static inline void shape_color_packet(const struct shape *s, const double *const
 		c[1][i] = v.g;
 		c[2][i] = v.b;
 	}
+}
+
+/* See color_packet: the material colour where the shape has no color_at. */
+static inline void shape_color_packet(const struct shape *s, const double *const p[3],
+				      uint32_t active, double *const c[3])
+{
+	if (s->ops->color_at && s->ops->color_packet) {
+		s->ops->color_packet(s, p, active, c);
+		return;
+	}
+	shape_color_lanes(s, p, active, c);
 }
 
 /* See specular_color_at: false (and *out untouched) for the usual shape. */

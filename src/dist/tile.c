@@ -69,11 +69,13 @@ static void tile_expect(struct tile_cursor *c, const char *lit)
 		c->ok = false;
 }
 
-/* 1 to 9 decimal digits. */
-static int tile_int(struct tile_cursor *c)
+/* The literal lit (what comes before the number in the text), then 1 to
+ * 9 decimal digits. */
+static int tile_int(struct tile_cursor *c, const char *lit)
 {
 	int v = 0, n = 0;
 
+	tile_expect(c, lit);
 	while (c->ok && *c->p >= '0' && *c->p <= '9' && n < 9) {
 		v = v * 10 + (*c->p++ - '0');
 		n++;
@@ -83,12 +85,13 @@ static int tile_int(struct tile_cursor *c)
 	return v;
 }
 
-/* Exactly 16 lower-case hex digits. */
-static uint64_t tile_hex64(struct tile_cursor *c)
+/* The literal lit, then exactly 16 lower-case hex digits. */
+static uint64_t tile_hex64(struct tile_cursor *c, const char *lit)
 {
 	uint64_t v = 0;
 	int i;
 
+	tile_expect(c, lit);
 	for (i = 0; i < 16 && c->ok; i++, c->p++) {
 		if (*c->p >= '0' && *c->p <= '9')
 			v = v << 4 | (uint64_t)(*c->p - '0');
@@ -115,28 +118,19 @@ int tile_text_parse(const char *path, const char *text, size_t len, struct tile_
 	buf[len] = '\0';
 	c.p = buf;
 	c.ok = true;
-	tile_expect(&c, "version ");
-	version = tile_int(&c);
+	version = tile_int(&c, "version ");
 	if (c.ok && version != RT_TILE_VERSION)
 		return diag_set(d, RT_E_SYNTAX, path, 0, 0,
 				"whitted-tile version %d, this whitted reads version %d", version,
 				RT_TILE_VERSION);
-	tile_expect(&c, "\nfull-size ");
-	t->full_width = tile_int(&c);
-	tile_expect(&c, " ");
-	t->full_height = tile_int(&c);
-	tile_expect(&c, "\nregion ");
-	t->x0 = tile_int(&c);
-	tile_expect(&c, " ");
-	t->y0 = tile_int(&c);
-	tile_expect(&c, " ");
-	t->x1 = tile_int(&c);
-	tile_expect(&c, " ");
-	t->y1 = tile_int(&c);
-	tile_expect(&c, "\nscene-hash ");
-	t->scene_hash = tile_hex64(&c);
-	tile_expect(&c, "\noptions-hash ");
-	t->options_hash = tile_hex64(&c);
+	t->full_width = tile_int(&c, "\nfull-size ");
+	t->full_height = tile_int(&c, " ");
+	t->x0 = tile_int(&c, "\nregion ");
+	t->y0 = tile_int(&c, " ");
+	t->x1 = tile_int(&c, " ");
+	t->y1 = tile_int(&c, " ");
+	t->scene_hash = tile_hex64(&c, "\nscene-hash ");
+	t->options_hash = tile_hex64(&c, "\noptions-hash ");
 	tile_expect(&c, "\noptions ");
 	if (!c.ok)
 		goto out_bad;

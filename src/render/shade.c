@@ -15,6 +15,15 @@
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
 
+/* Inline in every caller, past GCC's size limits, where the comment above
+ * a function says why; elsewhere C99 has no way to ask, and it is only
+ * inline. */
+#if defined(__GNUC__)
+#define SHADE_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define SHADE_ALWAYS_INLINE
+#endif
+
 /* A packet's shadow rays are one accel packet, their directions one
  * light_dirs call and the shape tests whole runs of RT_PACKET_RUN lanes. */
 typedef char packet_widths_agree[ACCEL_PACKET == RENDER_SHADOW_POINTS &&
@@ -89,9 +98,7 @@ static bool render_shadowed(const struct scene *s, struct vec3 p, struct vec3 l,
 /* A shadow ray's answer: from the packets render_packet.c traced for the
  * point's block (the same ray, made by the same arithmetic), or traced
  * here. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
+SHADE_ALWAYS_INLINE
 static inline bool render_blocked(const struct scene *s, const struct render_shadows *pre,
 			   size_t light, struct vec3 p, struct vec3 l, double dist, double eps)
 {
@@ -132,9 +139,7 @@ void render_shadow_packets(const struct scene *s, const struct light_dirs_points
 
 /* The direct light at p: for each light L not shadowed and in front of the
  * surface (N.L > 0), Lc * C * (kd (N.L) + ks max(R.L, 0)^shininess). */
-#if defined(__GNUC__)
-__attribute__((always_inline))	/* as it was when it had one caller */
-#endif
+SHADE_ALWAYS_INLINE	/* as it was when it had one caller */
 static inline struct color render_direct(const struct scene *s, const struct material *m,
 				  struct color base, const struct color *spec, struct vec3 p,
 				  struct vec3 n, struct vec3 refl, double eps,
@@ -285,9 +290,7 @@ struct color render_trace_tree(const struct scene *s, const struct render_settin
 /* Inline, so that render_trace_in keeps the point in registers as it did
  * before the packets needed it apart (3% more instructions on the course
  * example otherwise). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
+SHADE_ALWAYS_INLINE
 static inline void render_point_in(const struct ray *r, double t, const struct shape *hit,
 				   struct render_point *h)
 {
@@ -313,9 +316,7 @@ static inline void render_point_in(const struct ray *r, double t, const struct s
  * callers, the point's values then stay in registers as they did before
  * the packets needed the sum apart from the search (a shared function
  * cost the course example 3% more instructions). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
+SHADE_ALWAYS_INLINE
 static inline struct color render_shade_from(const struct scene *s,
 					     const struct render_settings *rs, const struct ray *r,
 					     int level, struct render_tree *tree,
@@ -371,9 +372,7 @@ static inline struct color render_shade_from(const struct scene *s,
 }
 
 /* The sum at the ray's nearest hit, hit at t (see render_shade_from). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
+SHADE_ALWAYS_INLINE
 static inline struct color render_shade_at(const struct scene *s,
 					   const struct render_settings *rs, const struct ray *r,
 					   int level, struct render_tree *tree,

@@ -4,7 +4,6 @@
  * enters or, from inside, where it leaves. */
 #include <math.h>
 
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -12,37 +11,15 @@
 #include "whitted/scene.h"
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
-#include "shapes/solve.h"
+#include "shapes/convex.h"
 
 enum { CUBE_FACES = 6 };
 
+/* The planes relative to lo (solid.at): -x, +x, -y, +y, -z, +z. */
 struct cube {
-	struct shape base;
+	struct convex_solid solid;
 	struct vec3 lo, hi;
-	/* Relative to lo, with unit normals pointing out: -x, +x, -y, +y, -z,
-	 * +z. */
-	struct solve_plane face[CUBE_FACES];
 };
-
-static bool cube_intersect(const struct shape *s, const struct ray *r,
-			   double t_min, double *t_max)
-{
-	const struct cube *cu = (const struct cube *)s;
-	struct ray local = { vec3_sub(r->origin, cu->lo), r->dir };
-	double t;
-
-	if (!solve_ray_convex(&local, cu->face, CUBE_FACES, t_min, *t_max, &t))
-		return false;
-	*t_max = t;
-	return true;
-}
-
-static struct vec3 cube_normal(const struct shape *s, struct vec3 p)
-{
-	const struct cube *cu = (const struct cube *)s;
-
-	return cu->face[solve_convex_face(cu->face, CUBE_FACES, vec3_sub(p, cu->lo))].n;
-}
 
 static bool cube_bounds(const struct shape *s, struct aabb *out)
 {
@@ -73,10 +50,7 @@ static int cube_export_pov(const struct shape *s, FILE *out, const struct pov_op
 	pov_write_vector(out, cu->lo.x, cu->lo.y, cu->lo.z);
 	fputs(", ", out);
 	pov_write_vector(out, cu->hi.x, cu->hi.y, cu->hi.z);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
+	return shape_pov_finish(s, out, opt);
 }
 
 /* The box's twelve triangles, normals outwards. */
@@ -92,21 +66,16 @@ static int cube_tessellate(const struct shape *s, const struct mesh_options *opt
 	return mesh_box(out, box);
 }
 
-static void cube_destroy(struct shape *s)
-{
-	rt_free(s);
-}
-
 static int cube_parse(struct parser *p, struct shape **out);
 
 const struct shape_ops cube_ops = {
 	.keyword = "cube",
 	.dialects = RT_DIALECT_BIT(RT_DIALECT_NEARFAR),
 	.parse = cube_parse,
-	.intersect = cube_intersect,
-	.normal = cube_normal,
+	.intersect = convex_intersect,
+	.normal = convex_normal,
 	.export_pov = cube_export_pov,
-	.destroy = cube_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = cube_bounds,
 	.degenerate = cube_degenerate,
 	.tessellate = cube_tessellate,
@@ -115,45 +84,28 @@ const struct shape_ops cube_ops = {
 
 struct shape *cube_create(struct vec3 corner, double side, const struct material *m)
 {
-	struct cube *cu = rt_malloc(sizeof(*cu));
+	struct cube *cu = shape_alloc(sizeof(*cu), &cube_ops, m);
 	struct vec3 e;
 	int axis;
 
 	if (!cu)
 		return NULL;
-	cu->base.ops = &cube_ops;
-	cu->base.mat = *m;
 	cu->lo = corner;
 	cu->hi = vec3_make(corner.x + side, corner.y + side, corner.z + side);
+	cu->solid.at = cu->lo;
+	cu->solid.faces = CUBE_FACES;
 	e = vec3_sub(cu->hi, cu->lo);
 	for (axis = 0; axis < 3; axis++) {
 		struct vec3 n = vec3_make(axis == 0, axis == 1, axis == 2);
-		cu->face[2 * axis].n = vec3_neg(n);
-		cu->face[2 * axis].d = 0.0;
-		cu->face[2 * axis + 1].n = n;
-		cu->face[2 * axis + 1].d = vec3_component(e, axis);
+		cu->solid.face[2 * axis].n = vec3_neg(n);
+		cu->solid.face[2 * axis].d = 0.0;
+		cu->solid.face[2 * axis + 1].n = n;
+		cu->solid.face[2 * axis + 1].d = vec3_component(e, axis);
 	}
-	return &cu->base;
+	return &cu->solid.base;
 }
 
 static int cube_parse(struct parser *p, struct shape **out)
 {
-	struct material m;
-	struct vec3 corner;
-	double side;
-	int rc;
-
-	*out = NULL;
-	if ((rc = parser_vec3(p, "cube corner", &corner)) < 0)
-		return rc;
-	if ((rc = parser_number(p, "cube side", &side)) < 0)
-		return rc;
-	if (!(side > 0.0))
-		return parser_fail(p, RT_E_RANGE, "cube side must be > 0, found %g", side);
-	if (side > 1e150)
-		return parser_fail(p, RT_E_RANGE, "cube side is too large (%g)", side);
-	if ((rc = parser_material(p, &m)) < 0)
-		return rc;
-	*out = cube_create(corner, side, &m);
-	return *out ? 0 : parser_fail(p, RT_E_NOMEM, "out of memory");
+	return shape_parse_point_size(p, "cube corner", "cube side", cube_create, out);
 }

@@ -149,17 +149,9 @@ static struct color floor_color_at(const struct shape *s, struct vec3 p)
 static void floor_normal_packet(const struct shape *s, const double *const p[3],
 				uint32_t active, double *const n[3])
 {
-	int i;
-
 	(void)s;
 	(void)p;
-	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
-		if (!(active >> i & 1))
-			continue;
-		n[0][i] = 0.0;
-		n[1][i] = 0.0;
-		n[2][i] = 1.0;
-	}
+	shape_normal_fill(active, vec3_make(0.0, 0.0, 1.0), n);
 }
 
 /* The plain checkerboard a vector at a time (solve_packet_floor_cells);
@@ -168,21 +160,12 @@ static void floor_cells_packet(const struct shape *s, const double *const p[3],
 			       uint32_t active, int shifted, double *const c[3])
 {
 	const struct floor *fl = (const struct floor *)s;
-	int i;
 
 	if (!fl->tex_path[0] && !fl->tex_path[1]) {
 		solve_packet_floor_cells(p, active, shifted, fl->half, fl->cell, c);
 		return;
 	}
-	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
-		struct color v;
-		if (!(active >> i & 1))
-			continue;
-		v = s->ops->color_at(s, vec3_make(p[0][i], p[1][i], p[2][i]));
-		c[0][i] = v.r;
-		c[1][i] = v.g;
-		c[2][i] = v.b;
-	}
+	shape_color_lanes(s, p, active, c);
 }
 
 static void floor_color_packet(const struct shape *s, const double *const p[3],
@@ -289,11 +272,9 @@ struct shape *floor_create_view(double width, double cell, const struct material
 	struct floor *fl;
 
 	assert(width > 0.0 && cell > 0.0);
-	fl = rt_malloc(sizeof(*fl));
+	fl = shape_alloc(sizeof(*fl), width == INFINITY ? &floor_infinite_ops : &floor_ops, m);
 	if (!fl)
 		return NULL;
-	fl->base.ops = width == INFINITY ? &floor_infinite_ops : &floor_ops;
-	fl->base.mat = *m;
 	fl->base.mat.color = color_make(1.0, 1.0, 1.0);
 	fl->half = 0.5 * width;
 	fl->cell = cell;

@@ -8,7 +8,6 @@
  * a ray meets it where it enters or, from inside, where it leaves. */
 #include <math.h>
 
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -16,17 +15,17 @@
 #include "whitted/scene.h"
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
-#include "shapes/solve.h"
+#include "syntax/parser_impl.h"
+#include "shapes/convex.h"
 
 enum { PYRAMID_FACES = 5 };
 
+/* The planes relative to the apex (solid.at): the base, then the sides
+ * facing -x, +x, -y, +y. */
 struct pyramid {
-	struct shape base;
+	struct convex_solid solid;
 	struct vec3 lo, hi;		/* the base's corners, both at the base's height */
 	struct vec3 apex;
-	/* Relative to the apex, with unit normals pointing out: the base,
-	 * then the sides facing -x, +x, -y, +y. */
-	struct solve_plane face[PYRAMID_FACES];
 };
 
 /* The unit outward normal n and offset d of n . q <= d, in coordinates q
@@ -47,47 +46,30 @@ static struct solve_plane pyramid_plane(double nx, double ny, double nz, double 
 	return pl;
 }
 
-/* The faces from the corners and the apex.  With h the apex's height over
+/* A new pyramid (NULL when out of memory) with the faces from the corners
+ * and the apex.  With h the apex's height over
  * the base and e the distance from the apex's foot to a side's base edge,
  * that side holds h q_axis + e q_z <= 0 (it passes through the apex and
  * the edge at q_axis = e, q_z = -h); the base holds -q_z <= h. */
-static struct shape *pyramid_init(struct pyramid *py, const struct shape_ops *ops,
-				  struct vec3 lo, struct vec3 hi, struct vec3 apex,
-				  const struct material *m)
+static struct shape *pyramid_new(const struct shape_ops *ops, struct vec3 lo, struct vec3 hi,
+				 struct vec3 apex, const struct material *m)
 {
+	struct pyramid *py = shape_alloc(sizeof(*py), ops, m);
 	double h = apex.z - lo.z;
 
-	py->base.ops = ops;
-	py->base.mat = *m;
+	if (!py)
+		return NULL;
 	py->lo = lo;
 	py->hi = hi;
 	py->apex = apex;
-	py->face[0] = pyramid_plane(0.0, 0.0, -1.0, h);
-	py->face[1] = pyramid_plane(-h, 0.0, apex.x - lo.x, 0.0);
-	py->face[2] = pyramid_plane(h, 0.0, hi.x - apex.x, 0.0);
-	py->face[3] = pyramid_plane(0.0, -h, apex.y - lo.y, 0.0);
-	py->face[4] = pyramid_plane(0.0, h, hi.y - apex.y, 0.0);
-	return &py->base;
-}
-
-static bool pyramid_intersect(const struct shape *s, const struct ray *r,
-			      double t_min, double *t_max)
-{
-	const struct pyramid *py = (const struct pyramid *)s;
-	struct ray local = { vec3_sub(r->origin, py->apex), r->dir };
-	double t;
-
-	if (!solve_ray_convex(&local, py->face, PYRAMID_FACES, t_min, *t_max, &t))
-		return false;
-	*t_max = t;
-	return true;
-}
-
-static struct vec3 pyramid_normal(const struct shape *s, struct vec3 p)
-{
-	const struct pyramid *py = (const struct pyramid *)s;
-
-	return py->face[solve_convex_face(py->face, PYRAMID_FACES, vec3_sub(p, py->apex))].n;
+	py->solid.at = apex;
+	py->solid.faces = PYRAMID_FACES;
+	py->solid.face[0] = pyramid_plane(0.0, 0.0, -1.0, h);
+	py->solid.face[1] = pyramid_plane(-h, 0.0, apex.x - lo.x, 0.0);
+	py->solid.face[2] = pyramid_plane(h, 0.0, hi.x - apex.x, 0.0);
+	py->solid.face[3] = pyramid_plane(0.0, -h, apex.y - lo.y, 0.0);
+	py->solid.face[4] = pyramid_plane(0.0, h, hi.y - apex.y, 0.0);
+	return &py->solid.base;
 }
 
 static bool pyramid_bounds(const struct shape *s, struct aabb *out)
@@ -148,10 +130,8 @@ static int pyramid_export_pov(const struct shape *s, FILE *out, const struct pov
 		}
 		fputs(" }\n", out);
 	}
-	fputs("  inside_vector <0,0,1>\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
+	fputs("  inside_vector <0,0,1>", out);
+	return shape_pov_finish(s, out, opt);
 }
 
 static int pyramid_tessellate(const struct shape *s, const struct mesh_options *opt,
@@ -167,7 +147,7 @@ static int pyramid_tessellate(const struct shape *s, const struct mesh_options *
 	pyramid_corners(py, v);
 	for (i = 0; i < 6; i++) {
 		const int *tri = pyramid_triangles[i];
-		const struct vec3 n = py->face[tri[3]].n;
+		const struct vec3 n = py->solid.face[tri[3]].n;
 		const struct vec3 p[3] = { v[tri[0]], v[tri[1]], v[tri[2]] };
 		const struct vec3 normals[3] = { n, n, n };
 		if ((rc = mesh_add_triangle(out, p, normals)) < 0)
@@ -176,81 +156,53 @@ static int pyramid_tessellate(const struct shape *s, const struct mesh_options *
 	return 0;
 }
 
-static void pyramid_destroy(struct shape *s)
-{
-	rt_free(s);
-}
-
 static int pyramid_parse(struct parser *p, struct shape **out);
 static int pyramid_centred_parse(struct parser *p, struct shape **out);
 
+/* The methods both placements share: a macro, since C99 cannot
+ * initialise one static table from another. */
+#define PYRAMID_METHODS                            \
+	.keyword = "pyramid",                      \
+	.intersect = convex_intersect,             \
+	.normal = convex_normal,                   \
+	.export_pov = pyramid_export_pov,          \
+	.destroy = shape_destroy_block,            \
+	.bounds = pyramid_bounds,                  \
+	.degenerate = pyramid_degenerate,          \
+	.tessellate = pyramid_tessellate,          \
+	.closed = shape_closed_always
+
 const struct shape_ops pyramid_ops = {
-	.keyword = "pyramid",
+	PYRAMID_METHODS,
 	.dialects = RT_DIALECT_BIT(RT_DIALECT_PYRAMID),
 	.parse = pyramid_parse,
-	.intersect = pyramid_intersect,
-	.normal = pyramid_normal,
-	.export_pov = pyramid_export_pov,
-	.destroy = pyramid_destroy,
-	.bounds = pyramid_bounds,
-	.degenerate = pyramid_degenerate,
-	.tessellate = pyramid_tessellate,
-	.closed = shape_closed_always,
 };
 
 /* nearfar's placement: the same methods, read from the base's centre. */
 const struct shape_ops pyramid_centred_ops = {
-	.keyword = "pyramid",
+	PYRAMID_METHODS,
 	.dialects = RT_DIALECT_BIT(RT_DIALECT_NEARFAR),
 	.parse = pyramid_centred_parse,
-	.intersect = pyramid_intersect,
-	.normal = pyramid_normal,
-	.export_pov = pyramid_export_pov,
-	.destroy = pyramid_destroy,
-	.bounds = pyramid_bounds,
-	.degenerate = pyramid_degenerate,
-	.tessellate = pyramid_tessellate,
-	.closed = shape_closed_always,
 };
 
 struct shape *pyramid_create(struct vec3 corner, double base, double height,
 			     const struct material *m)
 {
-	struct pyramid *py = rt_malloc(sizeof(*py));
 	struct vec3 hi = vec3_make(corner.x + base, corner.y + base, corner.z);
 	struct vec3 apex = vec3_make(corner.x + 0.5 * base, corner.y + 0.5 * base, corner.z + height);
 
-	if (!py)
-		return NULL;
-	return pyramid_init(py, &pyramid_ops, corner, hi, apex, m);
+	return pyramid_new(&pyramid_ops, corner, hi, apex, m);
 }
 
 struct shape *pyramid_create_centred(struct vec3 centre, double width, double height,
 				     const struct material *m)
 {
-	struct pyramid *py = rt_malloc(sizeof(*py));
 	double half = 0.5 * width;
 	struct vec3 lo = vec3_make(centre.x - half, centre.y - half, centre.z);
 	struct vec3 hi = vec3_make(centre.x + half, centre.y + half, centre.z);
 	struct vec3 apex = vec3_make(centre.x, centre.y, centre.z + height);
 
-	if (!py)
-		return NULL;
-	return pyramid_init(py, &pyramid_centred_ops, lo, hi, apex, m);
-}
-
-/* A size > 0 and small enough that the corners stay finite. */
-static int pyramid_parse_size(struct parser *p, const char *what, double *out)
-{
-	int rc = parser_number(p, what, out);
-
-	if (rc < 0)
-		return rc;
-	if (!(*out > 0.0))
-		return parser_fail(p, RT_E_RANGE, "%s must be > 0, found %g", what, *out);
-	if (*out > 1e150)
-		return parser_fail(p, RT_E_RANGE, "%s is too large (%g)", what, *out);
-	return 0;
+	return pyramid_new(&pyramid_centred_ops, lo, hi, apex, m);
 }
 
 /* The geometry and the material after the keyword: a point, the base's
@@ -267,8 +219,8 @@ static int pyramid_read(struct parser *p, bool centred, struct shape **out)
 
 	*out = NULL;
 	if ((rc = parser_vec3(p, what_point, &point)) < 0 ||
-	    (rc = pyramid_parse_size(p, what_base, &base)) < 0 ||
-	    (rc = pyramid_parse_size(p, "pyramid height", &height)) < 0 ||
+	    (rc = parser_size(p, what_base, &base)) < 0 ||
+	    (rc = parser_size(p, "pyramid height", &height)) < 0 ||
 	    (rc = parser_material(p, &m)) < 0)
 		return rc;
 	*out = centred ? pyramid_create_centred(point, base, height, &m)

@@ -5,7 +5,6 @@
  * once, for the roots, the normal and the mesh alike. */
 #include <math.h>
 
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -218,15 +217,7 @@ static int quadric_export_pov(const struct shape *s, FILE *out, const struct pov
 	fputs(", ", out);
 	pov_write_number(out, q->j);
 	quadric_write_clip(q, out);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
-static void quadric_destroy(struct shape *s)
-{
-	rt_free(s);
+	return shape_pov_finish(s, out, opt);
 }
 
 static int quadric_parse(struct parser *p, struct shape **out);
@@ -238,7 +229,7 @@ const struct shape_ops quadric_ops = {
 	.intersect = quadric_intersect,
 	.normal = quadric_normal,
 	.export_pov = quadric_export_pov,
-	.destroy = quadric_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = quadric_bounds,
 	.tessellate = quadric_tessellate,
 	.closed = quadric_closed,
@@ -247,12 +238,10 @@ const struct shape_ops quadric_ops = {
 struct shape *quadric_create(const double coef[10], struct vec3 clip_ref,
 			     struct vec3 clip_extent, const struct material *m)
 {
-	struct quadric *q = rt_malloc(sizeof(*q));
+	struct quadric *q = shape_alloc(sizeof(*q), &quadric_ops, m);
 
 	if (!q)
 		return NULL;
-	q->base.ops = &quadric_ops;
-	q->base.mat = *m;
 	q->a = coef[0];
 	q->b = coef[1];
 	q->c = coef[2];

@@ -2,10 +2,14 @@
  * optional members in one place. */
 #include <math.h>
 
+#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
+#include "whitted/parser.h"
+#include "whitted/pov.h"
 #include "shapes/shapes.h"
 #include "whitted/shape.h"
+#include "syntax/parser_impl.h"
 
 bool shape_is_textured(const struct shape *s)
 {
@@ -28,6 +32,47 @@ bool shape_closed_always(const struct shape *s)
 {
 	(void)s;
 	return true;
+}
+
+void *shape_alloc(size_t size, const struct shape_ops *ops, const struct material *m)
+{
+	struct shape *s = rt_malloc(size);
+
+	if (!s)
+		return NULL;
+	s->ops = ops;
+	s->mat = *m;
+	return s;
+}
+
+void shape_destroy_block(struct shape *s)
+{
+	rt_free(s);
+}
+
+int shape_pov_finish(const struct shape *s, FILE *out, const struct pov_options *opt)
+{
+	fputs("\n  ", out);
+	pov_write_texture(out, &s->mat, opt);
+	fputs("\n}\n", out);
+	return ferror(out) ? -RT_E_IO : 0;
+}
+
+int shape_parse_point_size(struct parser *p, const char *what_point, const char *what_size,
+			   shape_point_size_create *create, struct shape **out)
+{
+	struct material m;
+	struct vec3 point;
+	double size;
+	int rc;
+
+	*out = NULL;
+	if ((rc = parser_vec3(p, what_point, &point)) < 0 ||
+	    (rc = parser_size(p, what_size, &size)) < 0 ||
+	    (rc = parser_material(p, &m)) < 0)
+		return rc;
+	*out = create(point, size, &m);
+	return *out ? 0 : parser_fail(p, RT_E_NOMEM, "out of memory");
 }
 
 bool shape_closed(const struct shape *s)

@@ -4,7 +4,9 @@
 #ifndef RT_SHAPES_H
 #define RT_SHAPES_H
 
+#include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "whitted/diag.h"
 #include "whitted/material.h"
@@ -55,5 +57,40 @@ bool shape_closed_always(const struct shape *s);
 /* The decoded texels (8-bit RGB, top row first) of the white (k 0) or
  * black (k 1) cells' texture, or NULL when that cell has none. */
 const struct image *floor_texture(const struct shape *s, int k);
+/* A new shape of `size` bytes (a struct whose first member is its struct
+ * shape) with its ops and material set, the rest uninitialised; NULL when
+ * out of memory. */
+void *shape_alloc(size_t size, const struct shape_ops *ops, const struct material *m);
+/* The normal_packet of a shape whose normal is the same everywhere: v
+ * into each active lane of n. */
+static inline void shape_normal_fill(uint32_t active, struct vec3 v, double *const n[3])
+{
+	int i;
+
+	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
+		if (!(active >> i & 1))
+			continue;
+		n[0][i] = v.x;
+		n[1][i] = v.y;
+		n[2][i] = v.z;
+	}
+}
+/* The destroy method of the shapes that own nothing outside their own
+ * block of rt_malloc. */
+void shape_destroy_block(struct shape *s);
+
+struct parser;
+struct pov_options;
+/* The end that every built-in's export_pov writes after its geometry: the
+ * material's texture on a line of its own and the closing brace; 0, or
+ * -RT_E_IO when out has failed. */
+int shape_pov_finish(const struct shape *s, FILE *out, const struct pov_options *opt);
+/* The parse method of the objects written as a point, a size (see
+ * parser_size) and the material, made by create (sphere_create,
+ * cube_create); what_point and what_size name the two in messages. */
+typedef struct shape *shape_point_size_create(struct vec3 point, double size,
+					      const struct material *m);
+int shape_parse_point_size(struct parser *p, const char *what_point, const char *what_size,
+			   shape_point_size_create *create, struct shape **out);
 
 #endif

@@ -44,4 +44,5 @@ bool solve_ray_convex(const struct ray *r, const struct solve_plane *planes, int
  * either of the two. */
 int solve_convex_face(const struct solve_plane *planes, int n, struct vec3 p);
 
+
 #endif

@@ -1,7 +1,6 @@
 /* The sphere: |P - centre| = radius. */
 #include <math.h>
 
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -70,15 +69,7 @@ static int sphere_export_pov(const struct shape *s, FILE *out, const struct pov_
 	pov_write_vector(out, sp->centre.x, sp->centre.y, sp->centre.z);
 	fputs(", ", out);
 	pov_write_number(out, sp->radius);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
-static void sphere_destroy(struct shape *s)
-{
-	rt_free(s);
+	return shape_pov_finish(s, out, opt);
 }
 
 static int sphere_parse(struct parser *p, struct shape **out);
@@ -140,7 +131,7 @@ const struct shape_ops sphere_ops = {
 	.normal = sphere_normal,
 	.normal_packet = sphere_normal_packet,
 	.export_pov = sphere_export_pov,
-	.destroy = sphere_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = sphere_bounds,
 	.tessellate = sphere_tessellate,
 	.closed = shape_closed_always,
@@ -148,12 +139,10 @@ const struct shape_ops sphere_ops = {
 
 struct shape *sphere_create(struct vec3 centre, double radius, const struct material *m)
 {
-	struct sphere *sp = rt_malloc(sizeof(*sp));
+	struct sphere *sp = shape_alloc(sizeof(*sp), &sphere_ops, m);
 
 	if (!sp)
 		return NULL;
-	sp->base.ops = &sphere_ops;
-	sp->base.mat = *m;
 	sp->centre = centre;
 	sp->radius = radius;
 	sp->radius_sq = radius * radius;
@@ -163,22 +152,5 @@ struct shape *sphere_create(struct vec3 centre, double radius, const struct mate
 
 static int sphere_parse(struct parser *p, struct shape **out)
 {
-	struct material m;
-	struct vec3 centre;
-	double radius;
-	int rc;
-
-	*out = NULL;
-	if ((rc = parser_vec3(p, "sphere centre", &centre)) < 0)
-		return rc;
-	if ((rc = parser_number(p, "sphere radius", &radius)) < 0)
-		return rc;
-	if (!(radius > 0.0))
-		return parser_fail(p, RT_E_RANGE, "sphere radius must be > 0, found %g", radius);
-	if (radius > 1e150)
-		return parser_fail(p, RT_E_RANGE, "sphere radius is too large (%g)", radius);
-	if ((rc = parser_material(p, &m)) < 0)
-		return rc;
-	*out = sphere_create(centre, radius, &m);
-	return *out ? 0 : parser_fail(p, RT_E_NOMEM, "out of memory");
+	return shape_parse_point_size(p, "sphere centre", "sphere radius", sphere_create, out);
 }

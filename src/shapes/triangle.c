@@ -1,5 +1,4 @@
 /* The triangle, hit from both sides (Moller-Trumbore). */
-#include "base/alloc.h"
 #include "whitted/diag.h"
 #include "whitted/mesh.h"
 #include "whitted/parser.h"
@@ -56,17 +55,8 @@ static struct vec3 triangle_normal(const struct shape *s, struct vec3 p)
 static void triangle_normal_packet(const struct shape *s, const double *const p[3],
 				   uint32_t active, double *const n[3])
 {
-	struct vec3 v = triangle_unit_normal((const struct triangle *)s);
-	int i;
-
 	(void)p;
-	for (i = 0; i < RT_PACKET_MAX && active >> i; i++) {
-		if (!(active >> i & 1))
-			continue;
-		n[0][i] = v.x;
-		n[1][i] = v.y;
-		n[2][i] = v.z;
-	}
+	shape_normal_fill(active, triangle_unit_normal((const struct triangle *)s), n);
 }
 
 static bool triangle_bounds(const struct shape *s, struct aabb *out)
@@ -103,15 +93,7 @@ static int triangle_export_pov(const struct shape *s, FILE *out, const struct po
 	pov_write_vector(out, v1.x, v1.y, v1.z);
 	fputs(", ", out);
 	pov_write_vector(out, v2.x, v2.y, v2.z);
-	fputs("\n  ", out);
-	pov_write_texture(out, &s->mat, opt);
-	fputs("\n}\n", out);
-	return ferror(out) ? -RT_E_IO : 0;
-}
-
-static void triangle_destroy(struct shape *s)
-{
-	rt_free(s);
+	return shape_pov_finish(s, out, opt);
 }
 
 static int triangle_parse(struct parser *p, struct shape **out);
@@ -141,7 +123,7 @@ const struct shape_ops triangle_ops = {
 	.normal = triangle_normal,
 	.normal_packet = triangle_normal_packet,
 	.export_pov = triangle_export_pov,
-	.destroy = triangle_destroy,
+	.destroy = shape_destroy_block,
 	.bounds = triangle_bounds,
 	.degenerate = triangle_degenerate,
 	.tessellate = triangle_tessellate,
@@ -150,12 +132,10 @@ const struct shape_ops triangle_ops = {
 struct shape *triangle_create(struct vec3 a, struct vec3 b, struct vec3 c,
 			      const struct material *m)
 {
-	struct triangle *tr = rt_malloc(sizeof(*tr));
+	struct triangle *tr = shape_alloc(sizeof(*tr), &triangle_ops, m);
 
 	if (!tr)
 		return NULL;
-	tr->base.ops = &triangle_ops;
-	tr->base.mat = *m;
 	tr->v0 = a;
 	tr->e1 = vec3_sub(b, a);
 	tr->e2 = vec3_sub(c, a);

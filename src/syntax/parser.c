@@ -126,15 +126,23 @@ int parser_int(struct parser *p, const char *what, long lo, long hi, long *out)
 	return 0;
 }
 
-int parser_vec3(struct parser *p, const char *what, struct vec3 *out)
+/* Three numbers, each read by `read` (a point's coordinates, a colour's
+ * components), stopping at the first that fails. */
+static int parser_three(struct parser *p, const char *what,
+			int (*read)(struct parser *p, const char *what, double *out),
+			double *a, double *b, double *c)
 {
 	int rc;
 
-	if ((rc = parser_number(p, what, &out->x)) < 0 ||
-	    (rc = parser_number(p, what, &out->y)) < 0 ||
-	    (rc = parser_number(p, what, &out->z)) < 0)
+	if ((rc = read(p, what, a)) < 0 || (rc = read(p, what, b)) < 0 ||
+	    (rc = read(p, what, c)) < 0)
 		return rc;
 	return 0;
+}
+
+int parser_vec3(struct parser *p, const char *what, struct vec3 *out)
+{
+	return parser_three(p, what, parser_number, &out->x, &out->y, &out->z);
 }
 
 static int parser_unit_interval(struct parser *p, const char *what, double *out)
@@ -150,13 +158,7 @@ static int parser_unit_interval(struct parser *p, const char *what, double *out)
 
 int parser_color(struct parser *p, const char *what, struct color *out)
 {
-	int rc;
-
-	if ((rc = parser_unit_interval(p, what, &out->r)) < 0 ||
-	    (rc = parser_unit_interval(p, what, &out->g)) < 0 ||
-	    (rc = parser_unit_interval(p, what, &out->b)) < 0)
-		return rc;
-	return 0;
+	return parser_three(p, what, parser_unit_interval, &out->r, &out->g, &out->b);
 }
 
 int parser_non_negative(struct parser *p, const char *what, double *out)
@@ -178,6 +180,17 @@ int parser_positive(struct parser *p, const char *what, double *out)
 		return rc;
 	if (!(*out > 0.0))
 		return parser_fail(p, RT_E_RANGE, "%s must be > 0, found %g", what, *out);
+	return 0;
+}
+
+int parser_size(struct parser *p, const char *what, double *out)
+{
+	int rc = parser_positive(p, what, out);
+
+	if (rc < 0)
+		return rc;
+	if (*out > 1e150)
+		return parser_fail(p, RT_E_RANGE, "%s is too large (%g)", what, *out);
 	return 0;
 }
 

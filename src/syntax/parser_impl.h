@@ -48,6 +48,9 @@ int parser_int(struct parser *p, const char *what, long lo, long hi, long *out);
 /* A number >= 0, and one > 0. */
 int parser_non_negative(struct parser *p, const char *what, double *out);
 int parser_positive(struct parser *p, const char *what, double *out);
+/* A size (radius, side, height): > 0, and small enough (<= 1e150) that
+ * the points made from it stay finite. */
+int parser_size(struct parser *p, const char *what, double *out);
 /* A note at line (0: none) of the file, when the caller asked for notes. */
 void parser_note(struct parser *p, int line, const char *fmt, ...)
 #if defined(__GNUC__)
