@@ -96,3 +96,13 @@ const char *text_word_list(char *buf, size_t size, const char *prefix, const cha
 	}
 	return buf;
 }
+
+bool text_among(const char *s, const char *const *words, size_t n)
+{
+	size_t i;
+
+	for (i = 0; i < n; i++)
+		if (strcmp(words[i], s) == 0)
+			return true;
+	return false;
+}

@@ -29,6 +29,9 @@ void text_shell_word(struct text_buf *t, const char *s);
 const char *text_word_list(char *buf, size_t size, const char *prefix, const char *const *words,
 			   size_t n);
 
+/* Whether s is one of words[0..n) (strcmp equal). */
+bool text_among(const char *s, const char *const *words, size_t n);
+
 /* The length (1 to 4) of the UTF-8 sequence s starts with, or 0 when its
  * first byte starts none (a NUL inside ends a sequence as any byte that
  * is no continuation does). */

@@ -199,11 +199,8 @@ int check_args_parse(int argc, char **argv, bool grade, struct check_options *o)
 		if (rc == 0)
 			continue;
 		diag_clear(&d);
-		rc = c == '?' ? 0 : cli_scene_option(&o->scene, c, optarg, &d);
-		if (rc < 0)
-			return tool_usage_error("%s", d.msg);
-		if (rc == 0)
-			return tool_unknown_option(argv[optind - 1], longopts);
+		if ((rc = cli_scene_option_or_usage(&o->scene, c, optarg, argv, longopts)) != 0)
+			return rc;
 	}
 	first = optind;
 	if (grade) {

@@ -93,11 +93,8 @@ static int explain_args(int argc, char **argv, struct explain_options *o)
 			o->scene.read.threads = (int)n;
 			continue;
 		}
-		rc = c == '?' ? 0 : cli_scene_option(&o->scene, c, optarg, &d);
-		if (rc < 0)
-			return tool_usage_error("%s", d.msg);
-		if (rc == 0)
-			return tool_unknown_option(argv[optind - 1], longopts);
+		if ((rc = cli_scene_option_or_usage(&o->scene, c, optarg, argv, longopts)) != 0)
+			return rc;
 	}
 	first = optind;
 	if ((rc = cli_scene_and_operand(&o->scene, argc, argv, &first, "pixel X,Y", "")) != 0)

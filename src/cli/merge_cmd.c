@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/text.h"
 #include "cli/cli.h"
 #include "cli/plugin_opts.h"
 #include "cli/scene_opts.h"
@@ -35,16 +36,6 @@ static void merge_usage(FILE *f)
 		"or an I/O error (nothing is written), 2 bad command line.\n");
 }
 
-static bool merge_named(const char *path, const char *const *files, int n)
-{
-	int i;
-
-	for (i = 0; i < n; i++)
-		if (strcmp(files[i], path) == 0)
-			return true;
-	return false;
-}
-
 /* Each plugin the first tile records (the others must agree with it) that
  * has the name of a plugin named with --plugin (files[0..n); not those of
  * WHITTED_PLUGIN_PATH, which would change what merge accepts) must be that
@@ -72,7 +63,7 @@ static int merge_check_plugins(const char *first, const char *const *files, int 
 			size_t len = strlen(pl->name);
 
 			if (strncmp(rec, pl->name, len) != 0 || rec[len] != '@' ||
-			    !merge_named(pl->path, files, n))
+			    !text_among(pl->path, files, (size_t)n))
 				continue;
 			plugin_records(&pl->path, 1, loaded, sizeof(loaded));
 			if (strcmp(rec, loaded) != 0)

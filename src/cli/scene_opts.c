@@ -219,6 +219,21 @@ static int cli_parse_glass(struct cli_scene *o, const char *arg, struct diag *d)
 }
 
 /* Long: the shared options' one switch, a case of two or three lines each. */
+int cli_scene_option_or_usage(struct cli_scene *o, int c, const char *arg, char **argv,
+			      const struct option *longopts)
+{
+	struct diag d;
+	int rc;
+
+	diag_clear(&d);
+	rc = c == '?' ? 0 : cli_scene_option(o, c, arg, &d);
+	if (rc < 0)
+		return tool_usage_error("%s", d.msg);
+	if (rc == 0)
+		return tool_unknown_option(argv[optind - 1], longopts);
+	return 0;
+}
+
 int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag *d)
 {
 	double v[2];
@@ -460,12 +475,8 @@ int cli_parse_options(int argc, char **argv, const char *shortopts,
 			return rc;
 		if (rc == 0)
 			continue;
-		diag_clear(&d);
-		rc = c == '?' ? 0 : cli_scene_option(scene, c, optarg, &d);
-		if (rc < 0)
-			return tool_usage_error("%s", d.msg);
-		if (rc == 0)
-			return tool_unknown_option(argv[optind - 1], longopts);
+		if ((rc = cli_scene_option_or_usage(scene, c, optarg, argv, longopts)) != 0)
+			return rc;
 	}
 	if (cli_scene_operand(scene, argc, argv, optind, &scene->path, &d) < 0)
 		return tool_usage_error("%s", d.msg);

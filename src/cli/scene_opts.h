@@ -122,6 +122,11 @@ int cli_parse_options(int argc, char **argv, const char *shortopts,
 /* Handles one of the shared options.  Returns 1 when it was one, 0 when it
  * is not a shared option, or -RT_E_INVALID with a message naming it. */
 int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag *d);
+/* cli_scene_option for the option getopt_long just read (c '?': one it
+ * did not know) at argv[optind - 1]: 0 when it was a shared one, else
+ * the usage error printed and its exit status. */
+int cli_scene_option_or_usage(struct cli_scene *o, int c, const char *arg, char **argv,
+			      const struct option *longopts);
 
 /* Loads the scene (or the test scene when path is NULL), applies the
  * overrides, adds the floor and sets up the camera, recording in o the

@@ -18,6 +18,7 @@
 #include "base/file.h"
 #include "base/hash.h"
 #include "base/platform.h"
+#include "base/text.h"
 #include "plugin/loader.h"
 #include "shapes/registry.h"
 #include "shapes/solve.h"
@@ -445,16 +446,6 @@ static int plugin_by_name(const void *a, const void *b)
 	return strcmp((*x)->name, (*y)->name);
 }
 
-static bool plugin_among(const char *path, const char *const *paths, size_t n)
-{
-	size_t i;
-
-	for (i = 0; i < n; i++)
-		if (strcmp(paths[i], path) == 0)
-			return true;
-	return false;
-}
-
 void plugin_records(const char *const *paths, size_t n_paths, char *buf, size_t size)
 {
 	const struct plugin_info *sorted[RT_PLUGINS_MAX];
@@ -464,7 +455,7 @@ void plugin_records(const char *const *paths, size_t n_paths, char *buf, size_t 
 		return;
 	buf[0] = '\0';
 	for (i = 0; i < n_plugins; i++)
-		if (!paths || plugin_among(plugins[i].path, paths, n_paths))
+		if (!paths || text_among(plugins[i].path, paths, n_paths))
 			sorted[k++] = &plugins[i].info;
 	qsort(sorted, k, sizeof(sorted[0]), plugin_by_name);
 	for (i = 0; i < k && n < size; i++) {

@@ -62,4 +62,20 @@ static void test_text_word_list(void **state)
 	assert_string_equal(text_word_list(small, sizeof(small), ".", w, 3), ".png,");
 }
 
-SUPPORT_MAIN(SUPPORT_TESTS(test_text_utf8_length, test_text_shell_word, test_text_word_list))
+/* Membership by whole string: a prefix or a longer string is not one of
+ * the words, and no words hold nothing. */
+static void test_text_among(void **state)
+{
+	static const char *const w[] = { "a/p.so", "b/q.so" };
+
+	(void)state;
+	assert_true(text_among("a/p.so", w, 2));
+	assert_true(text_among("b/q.so", w, 2));
+	assert_false(text_among("b/q.so", w, 1));
+	assert_false(text_among("a/p", w, 2));
+	assert_false(text_among("a/p.so.1", w, 2));
+	assert_false(text_among("a/p.so", w, 0));
+}
+
+SUPPORT_MAIN(SUPPORT_TESTS(test_text_utf8_length, test_text_shell_word, test_text_word_list,
+			   test_text_among))
