@@ -218,7 +218,6 @@ static int cli_parse_glass(struct cli_scene *o, const char *arg, struct diag *d)
 	}
 }
 
-/* Long: the shared options' one switch, a case of two or three lines each. */
 int cli_scene_option_or_usage(struct cli_scene *o, int c, const char *arg, char **argv,
 			      const struct option *longopts)
 {
@@ -234,6 +233,7 @@ int cli_scene_option_or_usage(struct cli_scene *o, int c, const char *arg, char 
 	return 0;
 }
 
+/* Long: the shared options' one switch, a case of two or three lines each. */
 int cli_scene_option(struct cli_scene *o, int opt, const char *arg, struct diag *d)
 {
 	double v[2];
