@@ -15,7 +15,7 @@
 #define FIT_COARSE_RADIUS 160.0
 #define FIT_COARSE_SPACING 40.0
 /* Stage 0 refines the best this many of the starts and coarse cameras. */
-#define FIT_FIRST_TRIES 6
+#define FIT_FIRST_TRIES 12
 /* The stage whose hypotheses get the last look at the floor's aliases
  * (fit_final_alias): the camera is sharp there. */
 #define FIT_LAST_ALIAS_STAGE 4

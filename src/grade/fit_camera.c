@@ -7,7 +7,7 @@
 #include "grade/fit_search.h"
 
 /* A fit this far from the image (a mean squared grey difference on the
- * last level: 50 is about 7 levels everywhere) was pulled away by a
+ * last level: 15 is about 4 levels everywhere) was pulled away by a
  * mistake that changes most of the image: the passes are made once more
  * with each of these rendered in place of the reference (the camera and
  * the mistake fitted at once), and the nearest of all kept.  Gamma and no
@@ -18,7 +18,11 @@
  * refit with a cause (grade_fit_camera_with) starts from the camera
  * found, too near to leave such a camera; docs/validation.md (the camera
  * fit, step 7) has the cases. */
-#define FIT_PULLED_SCORE 50.0
+#define FIT_PULLED_SCORE 15.0
+/* ... and one still this far after the pulled passes is searched with
+ * the floor's other shapes (fit_floor.c): 50, about 7 levels everywhere,
+ * which no camera of the scene's floor comes near. */
+#define FIT_SHAPE_SCORE 50.0
 static const struct {
 	enum grade_cause cause;
 	int form;
@@ -50,7 +54,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		if (fit_keep_better(out, &again))
 			kept = &pulls[k];
 	}
-	if (out->score > FIT_PULLED_SCORE) {
+	if (out->score > FIT_SHAPE_SCORE) {
 		if ((rc = fit_floor_shape(job, starts, n_starts, sub, out, &shape, d)) < 0)
 			return rc;
 		if (rc > 0)
