@@ -207,6 +207,11 @@ static void compare_text(const struct check_options *o, const struct check_refer
 		print_psnr(res->fig_found.psnr);
 		printf("    (%.2f dB at the camera given; %ld ties there)\n", res->fig.psnr,
 		       res->found.n_ties);
+		if (res->fig_found.psnr < res->fig.psnr)
+			printf("  note: lower than at the camera given: the camera was fitted on the "
+			       "image's greys, with a mistake that changes most of it rendered (swapped "
+			       "tiles, gamma), and comes nearer so; the plain reference's colours differ "
+			       "more there\n");
 	} else if (res->floor_alone)
 		printf("camera: none found: the nearest view the fit found shows no object, only the "
 		       "floor and the sky, which look alike from many places\n");
