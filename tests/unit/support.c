@@ -86,6 +86,21 @@ int support_parse_error(const char *text, struct diag *d)
 	return rc;
 }
 
+void support_assert_scene_error(const char *text, int rc, int line, int col, const char *msg,
+				bool whole, const char *file, int at)
+{
+	struct diag d;
+	int got = support_parse_error(text, &d);
+	bool said = !msg || (whole ? strcmp(d.msg, msg) == 0 : strstr(d.msg, msg) != NULL);
+
+	if (got != rc || d.line != line || (col > 0 && d.col != col) || !said) {
+		print_error("error %d at %d:%d: %s\nexpected error %d at %d:%d: %s%s%s\n", got, d.line,
+			    d.col, d.msg, rc, line, col, whole ? "" : "...", msg ? msg : "(any)",
+			    whole ? "" : "...");
+		_fail(file, at);
+	}
+}
+
 const enum rt_simd support_isa_sets[3] = { RT_SIMD_BASE, RT_SIMD_AVX2, RT_SIMD_AVX512 };
 
 const char *support_isa_tag(enum rt_simd s)

@@ -87,6 +87,16 @@ struct scene *support_parse(const char *text);
 struct scene *support_prepared(const char *text, bool with_floor);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
+/* Scene text that must not parse (support_parse_error): the error code
+ * rc (negative, as scene_parse returns it), the line, the column where
+ * col > 0, and the message: all of it (assert_scene_error) or a part of
+ * it (assert_scene_error_part); a NULL message is not looked at. */
+#define assert_scene_error(text, rc, line, col, msg) \
+	support_assert_scene_error((text), (rc), (line), (col), (msg), true, __FILE__, __LINE__)
+#define assert_scene_error_part(text, rc, line, col, part) \
+	support_assert_scene_error((text), (rc), (line), (col), (part), false, __FILE__, __LINE__)
+void support_assert_scene_error(const char *text, int rc, int line, int col, const char *msg,
+				bool whole, const char *file, int at);
 /* Reads one object's tokens (those after its keyword) with the table's
  * parse, as the scene reader does; the diagnostic names test.txt. */
 int support_parse_object(const struct shape_ops *ops, const char *text, struct shape **out,
