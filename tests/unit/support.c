@@ -70,6 +70,15 @@ struct scene *support_parse(const char *text)
 	return s;
 }
 
+void support_default_camera(struct camera *cam, int size)
+{
+	struct camera_params p;
+	struct diag d;
+
+	camera_params_default(&p);
+	assert_int_equal(camera_init(cam, &p, size, &d), 0);
+}
+
 int support_parse_error(const char *text, struct diag *d)
 {
 	struct scene *s = NULL;

@@ -13,6 +13,7 @@
 #include "scene/scene_impl.h"
 #include "shapes/shapes.h"
 #include "whitted/scenefile.h"
+#include "whitted/camera.h"
 #include "whitted/diag.h"
 #include "whitted/material.h"
 #include "whitted/pov.h"
@@ -85,6 +86,8 @@ struct scene *support_parse(const char *text);
  * assignment's floor when with_floor, and prepares the scene for
  * rendering on one thread.  The caller destroys the scene. */
 struct scene *support_prepared(const char *text, bool with_floor);
+/* *cam, the default camera (camera_params_default) at size x size. */
+void support_default_camera(struct camera *cam, int size);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
 /* Scene text that must not parse (support_parse_error): the error code

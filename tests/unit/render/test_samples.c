@@ -21,13 +21,11 @@
 static struct scene *course(struct camera *cam, int size)
 {
 	struct scene *s = support_parse(course_scene);
-	struct camera_params cp;
 	struct diag d;
 
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(cam, &cp, size, &d), 0);
+	support_default_camera(cam, size);
 	return s;
 }
 
