@@ -279,6 +279,23 @@ void support_assert_object_error(const struct shape_ops *ops, const struct suppo
 	}
 }
 
+void support_assert_material(const struct material *m, double r, double g, double b, double ka,
+			     double kd, double ks, double kr, double shininess, const char *file,
+			     int line)
+{
+	support_assert_near(m->color.r, r, 0.0, "color.r", file, line);
+	support_assert_near(m->color.g, g, 0.0, "color.g", file, line);
+	support_assert_near(m->color.b, b, 0.0, "color.b", file, line);
+	support_assert_coefficients(m, ka, kd, ks, kr, shininess, file, line);
+}
+
+struct shape *support_only_shape(const struct scene *sc, const char *keyword)
+{
+	assert_int_equal(sc->n_shapes, 1);
+	assert_ptr_equal(sc->shapes[0]->ops, shape_ops_find(keyword, strlen(keyword)));
+	return sc->shapes[0];
+}
+
 void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
 				 double kr, double shininess, const char *file, int line)
 {

@@ -48,6 +48,15 @@ int support_drop_shape(void **state);
 	support_assert_coefficients((m), (ka), (kd), (ks), (kr), (shininess), __FILE__, __LINE__)
 void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
 				 double kr, double shininess, const char *file, int line);
+/* The material's colour and coefficients, each exactly as given. */
+#define assert_material(m, r, g, b, ka, kd, ks, kr, shininess) \
+	support_assert_material((m), (r), (g), (b), (ka), (kd), (ks), (kr), (shininess), __FILE__, \
+				__LINE__)
+void support_assert_material(const struct material *m, double r, double g, double b, double ka,
+			     double kd, double ks, double kr, double shininess, const char *file,
+			     int line);
+/* The scene's only shape, which must be of the table with this keyword. */
+struct shape *support_only_shape(const struct scene *sc, const char *keyword);
 /* A ray that must hit shape s past t_min: *t_max is set to infinity, and
  * after the call holds the nearest hit, which must be t within eps. */
 #define assert_hit(s, r, t_min, t_max, t, eps) \
