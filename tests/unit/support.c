@@ -79,6 +79,14 @@ void support_default_camera(struct camera *cam, int size)
 	assert_int_equal(camera_init(cam, &p, size, &d), 0);
 }
 
+void support_lens_params(struct camera_params *p, double fov_deg, double near, double aspect)
+{
+	camera_params_default(p);
+	p->fov_deg = fov_deg;
+	p->near = near;
+	p->aspect = aspect;
+}
+
 int support_parse_error(const char *text, struct diag *d)
 {
 	struct scene *s = NULL;

@@ -97,6 +97,9 @@ struct scene *support_parse(const char *text);
 struct scene *support_prepared(const char *text, bool with_floor);
 /* *cam, the default camera (camera_params_default) at size x size. */
 void support_default_camera(struct camera *cam, int size);
+/* *p, the default camera parameters with this lens (nearfar's field of
+ * view, near plane and aspect). */
+void support_lens_params(struct camera_params *p, double fov_deg, double near, double aspect);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
 /* Scene text that must not parse (support_parse_error): the error code
