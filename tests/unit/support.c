@@ -70,6 +70,23 @@ struct scene *support_parse(const char *text)
 	return s;
 }
 
+void support_default_camera(struct camera *cam, int size)
+{
+	struct camera_params p;
+	struct diag d;
+
+	camera_params_default(&p);
+	assert_int_equal(camera_init(cam, &p, size, &d), 0);
+}
+
+void support_lens_params(struct camera_params *p, double fov_deg, double near, double aspect)
+{
+	camera_params_default(p);
+	p->fov_deg = fov_deg;
+	p->near = near;
+	p->aspect = aspect;
+}
+
 int support_parse_error(const char *text, struct diag *d)
 {
 	struct scene *s = NULL;
@@ -84,6 +101,21 @@ int support_parse_error(const char *text, struct diag *d)
 	}
 	assert_null(s);
 	return rc;
+}
+
+void support_assert_scene_error(const char *text, int rc, int line, int col, const char *msg,
+				bool whole, const char *file, int at)
+{
+	struct diag d;
+	int got = support_parse_error(text, &d);
+	bool said = !msg || (whole ? strcmp(d.msg, msg) == 0 : strstr(d.msg, msg) != NULL);
+
+	if (got != rc || d.line != line || (col > 0 && d.col != col) || !said) {
+		print_error("error %d at %d:%d: %s\nexpected error %d at %d:%d: %s%s%s\n", got, d.line,
+			    d.col, d.msg, rc, line, col, whole ? "" : "...", msg ? msg : "(any)",
+			    whole ? "" : "...");
+		_fail(file, at);
+	}
 }
 
 const enum rt_simd support_isa_sets[3] = { RT_SIMD_BASE, RT_SIMD_AVX2, RT_SIMD_AVX512 };
@@ -253,6 +285,23 @@ void support_assert_object_error(const struct shape_ops *ops, const struct suppo
 			    e->line, e->col, e->msg);
 		fail();
 	}
+}
+
+void support_assert_material(const struct material *m, double r, double g, double b, double ka,
+			     double kd, double ks, double kr, double shininess, const char *file,
+			     int line)
+{
+	support_assert_near(m->color.r, r, 0.0, "color.r", file, line);
+	support_assert_near(m->color.g, g, 0.0, "color.g", file, line);
+	support_assert_near(m->color.b, b, 0.0, "color.b", file, line);
+	support_assert_coefficients(m, ka, kd, ks, kr, shininess, file, line);
+}
+
+struct shape *support_only_shape(const struct scene *sc, const char *keyword)
+{
+	assert_int_equal(sc->n_shapes, 1);
+	assert_ptr_equal(sc->shapes[0]->ops, shape_ops_find(keyword, strlen(keyword)));
+	return sc->shapes[0];
 }
 
 void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,

@@ -13,6 +13,7 @@
 #include "scene/scene_impl.h"
 #include "shapes/shapes.h"
 #include "whitted/scenefile.h"
+#include "whitted/camera.h"
 #include "whitted/diag.h"
 #include "whitted/material.h"
 #include "whitted/pov.h"
@@ -47,6 +48,15 @@ int support_drop_shape(void **state);
 	support_assert_coefficients((m), (ka), (kd), (ks), (kr), (shininess), __FILE__, __LINE__)
 void support_assert_coefficients(const struct material *m, double ka, double kd, double ks,
 				 double kr, double shininess, const char *file, int line);
+/* The material's colour and coefficients, each exactly as given. */
+#define assert_material(m, r, g, b, ka, kd, ks, kr, shininess) \
+	support_assert_material((m), (r), (g), (b), (ka), (kd), (ks), (kr), (shininess), __FILE__, \
+				__LINE__)
+void support_assert_material(const struct material *m, double r, double g, double b, double ka,
+			     double kd, double ks, double kr, double shininess, const char *file,
+			     int line);
+/* The scene's only shape, which must be of the table with this keyword. */
+struct shape *support_only_shape(const struct scene *sc, const char *keyword);
 /* A ray that must hit shape s past t_min: *t_max is set to infinity, and
  * after the call holds the nearest hit, which must be t within eps. */
 #define assert_hit(s, r, t_min, t_max, t, eps) \
@@ -85,8 +95,23 @@ struct scene *support_parse(const char *text);
  * assignment's floor when with_floor, and prepares the scene for
  * rendering on one thread.  The caller destroys the scene. */
 struct scene *support_prepared(const char *text, bool with_floor);
+/* *cam, the default camera (camera_params_default) at size x size. */
+void support_default_camera(struct camera *cam, int size);
+/* *p, the default camera parameters with this lens (nearfar's field of
+ * view, near plane and aspect). */
+void support_lens_params(struct camera_params *p, double fov_deg, double near, double aspect);
 /* Parses text that must fail; returns the error code and fills *d. */
 int support_parse_error(const char *text, struct diag *d);
+/* Scene text that must not parse (support_parse_error): the error code
+ * rc (negative, as scene_parse returns it), the line, the column where
+ * col > 0, and the message: all of it (assert_scene_error) or a part of
+ * it (assert_scene_error_part); a NULL message is not looked at. */
+#define assert_scene_error(text, rc, line, col, msg) \
+	support_assert_scene_error((text), (rc), (line), (col), (msg), true, __FILE__, __LINE__)
+#define assert_scene_error_part(text, rc, line, col, part) \
+	support_assert_scene_error((text), (rc), (line), (col), (part), false, __FILE__, __LINE__)
+void support_assert_scene_error(const char *text, int rc, int line, int col, const char *msg,
+				bool whole, const char *file, int at);
 /* Reads one object's tokens (those after its keyword) with the table's
  * parse, as the scene reader does; the diagnostic names test.txt. */
 int support_parse_object(const struct shape_ops *ops, const char *text, struct shape **out,

@@ -42,6 +42,11 @@
 #define SUPPORT_FIXTURE_TESTS(setup, teardown, ...) \
 	SUPPORT_MAP(SUPPORT_FIXTURE_, setup, teardown, __VA_ARGS__)
 
+/* One entry named name that runs f with *state pointing at data, for a
+ * table-driven test run as several named tests (one part of the table
+ * each). */
+#define SUPPORT_DATA_TEST(name, f, data) { name, f, NULL, NULL, (void *)(data) }
+
 #define SUPPORT_PLAIN_(f, setup, teardown) cmocka_unit_test(f)
 #define SUPPORT_FIXTURE_(f, setup, teardown) cmocka_unit_test_setup_teardown(f, setup, teardown)
 

@@ -273,8 +273,7 @@ static void test_alloc_image_write(void **state)
 
 static void test_alloc_render_allocates_nothing(void **state)
 {
-	struct scene *s = support_parse(course_scene);
-	struct camera_params cp;
+	struct scene *s = support_prepared(course_scene, true);
 	struct render_job job;
 	struct camera cam;
 	struct image img;
@@ -283,10 +282,7 @@ static void test_alloc_render_allocates_nothing(void **state)
 	struct render_settings rs = { 4, RT_CLAMP_LEVEL };
 
 	(void)state;
-	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
-	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 24, &d), 0);
+	support_default_camera(&cam, 24);
 	assert_int_equal(image_alloc(&img, 24, 24, &d), 0);
 	render_job_init(&job, s, &cam, 3);
 	job.settings = rs;

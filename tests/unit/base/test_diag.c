@@ -38,30 +38,35 @@ static void test_diag_clear_zeroes(void **state)
 
 static void test_diag_format_forms(void **state)
 {
+	static const struct {
+		enum rt_err code;
+		const char *file;
+		int line, col;
+		const char *msg, *severity, *want;
+	} forms[] = {
+		{ RT_E_SYNTAX, "scene.txt", 12, 5, "expected a number, found 'abc'", "error",
+		  "scene.txt:12:5: error: expected a number, found 'abc'" },
+		{ RT_E_SYNTAX, "scene.txt", 40, 0, "ignoring 55 lines after the last light", "note",
+		  "scene.txt:40: note: ignoring 55 lines after the last light" },
+		/* A note about a whole file starts with the file, as notes do. */
+		{ RT_OK, "scene.txt", 0, 0, "read as the spot dialect (4 point lights, 1 spotlight)",
+		  "note", "scene.txt: note: read as the spot dialect (4 point lights, 1 spotlight)" },
+		{ RT_E_IO, "out.png", 0, 0, "cannot write: No such file or directory", "error",
+		  "whitted: error: out.png: cannot write: No such file or directory" },
+		{ RT_E_INVALID, "", 3, 4, "the up vector is zero", "error",
+		  "whitted: error: the up vector is zero" },
+	};
 	char buf[1024];
 	struct diag d;
+	size_t i;
 
 	(void)state;
-	diag_set(&d, RT_E_SYNTAX, "scene.txt", 12, 5, "expected a number, found 'abc'");
-	diag_format(&d, "whitted", "error", buf, sizeof(buf));
-	assert_string_equal(buf, "scene.txt:12:5: error: expected a number, found 'abc'");
-
-	diag_set(&d, RT_E_SYNTAX, "scene.txt", 40, 0, "ignoring 55 lines after the last light");
-	diag_format(&d, "whitted", "note", buf, sizeof(buf));
-	assert_string_equal(buf, "scene.txt:40: note: ignoring 55 lines after the last light");
-
-	/* A note about a whole file starts with the file, as notes do. */
-	diag_set(&d, RT_OK, "scene.txt", 0, 0, "read as the spot dialect (4 point lights, 1 spotlight)");
-	diag_format(&d, "whitted", "note", buf, sizeof(buf));
-	assert_string_equal(buf, "scene.txt: note: read as the spot dialect (4 point lights, 1 spotlight)");
-
-	diag_set(&d, RT_E_IO, "out.png", 0, 0, "cannot write: No such file or directory");
-	diag_format(&d, "whitted", "error", buf, sizeof(buf));
-	assert_string_equal(buf, "whitted: error: out.png: cannot write: No such file or directory");
-
-	diag_set(&d, RT_E_INVALID, "", 3, 4, "the up vector is zero");
-	diag_format(&d, "whitted", "error", buf, sizeof(buf));
-	assert_string_equal(buf, "whitted: error: the up vector is zero");
+	for (i = 0; i < sizeof(forms) / sizeof(forms[0]); i++) {
+		diag_set(&d, forms[i].code, forms[i].file, forms[i].line, forms[i].col, "%s",
+			 forms[i].msg);
+		diag_format(&d, "whitted", forms[i].severity, buf, sizeof(buf));
+		assert_string_equal(buf, forms[i].want);
+	}
 }
 
 static void test_diag_format_truncates(void **state)

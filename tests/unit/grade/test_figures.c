@@ -120,30 +120,29 @@ static void test_grade_transforms(void **state)
 	static const uint8_t swapped[12] = { 3, 2, 1, 6, 5, 4, 9, 8, 7, 12, 11, 10 };
 	static const uint8_t half_turn[12] = { 10, 11, 12, 7, 8, 9, 4, 5, 6, 1, 2, 3 };
 	static const uint8_t flipped_swapped[12] = { 9, 8, 7, 12, 11, 10, 3, 2, 1, 6, 5, 4 };
+	static const struct {
+		unsigned map;
+		const uint8_t *want;
+	} maps[] = {
+		{ GRADE_MAP_MIRROR, mirrored },
+		{ GRADE_MAP_FLIP, flipped },
+		{ GRADE_MAP_TRANSPOSE, transposed },
+		{ GRADE_MAP_RED_BLUE, swapped },
+		/* Two at once: a half turn, and BMP's rows and bytes both wrong. */
+		{ GRADE_MAP_MIRROR | GRADE_MAP_FLIP, half_turn },
+		{ GRADE_MAP_FLIP | GRADE_MAP_RED_BLUE, flipped_swapped },
+	};
 	struct image ia, t;
 	struct diag d;
+	size_t i;
 
 	(void)state;
 	image_of(&ia, 2, 2, a);
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_MIRROR, &t, &d), 0);
-	assert_memory_equal(t.pixels, mirrored, 12);
-	image_free(&t);
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_FLIP, &t, &d), 0);
-	assert_memory_equal(t.pixels, flipped, 12);
-	image_free(&t);
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_TRANSPOSE, &t, &d), 0);
-	assert_memory_equal(t.pixels, transposed, 12);
-	image_free(&t);
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_RED_BLUE, &t, &d), 0);
-	assert_memory_equal(t.pixels, swapped, 12);
-	image_free(&t);
-	/* Two at once: a half turn, and BMP's rows and bytes both wrong. */
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_MIRROR | GRADE_MAP_FLIP, &t, &d), 0);
-	assert_memory_equal(t.pixels, half_turn, 12);
-	image_free(&t);
-	assert_int_equal(grade_transform_map(&ia, GRADE_MAP_FLIP | GRADE_MAP_RED_BLUE, &t, &d), 0);
-	assert_memory_equal(t.pixels, flipped_swapped, 12);
-	image_free(&t);
+	for (i = 0; i < sizeof(maps) / sizeof(maps[0]); i++) {
+		assert_int_equal(grade_transform_map(&ia, maps[i].map, &t, &d), 0);
+		assert_memory_equal(t.pixels, maps[i].want, 12);
+		image_free(&t);
+	}
 	image_free(&ia);
 }
 

@@ -61,6 +61,21 @@ static void project(const struct camera_params *p, struct vec3 q, int size, doub
 	*w = (c.half_height - vec3_dot(dv, c.up) / z) / c.pixel_scale;
 }
 
+/* The view v moved by amount along its move k alone (fit_view_move
+ * about pivot), as camera parameters *q (fit_params_of on base), and
+ * where that camera sees point pt in a 100 x 100 image. */
+static void project_moved(const double *v, int k, double amount, double pivot,
+			  const struct camera_params *base, struct vec3 pt,
+			  struct camera_params *q, double *u, double *w)
+{
+	double mv[FIT_DIM] = { 0 }, m[FIT_DIM];
+
+	mv[k] = amount;
+	fit_view_move(v, mv, pivot, m);
+	fit_params_of(m, base, q);
+	project(q, pt, 100, u, w);
+}
+
 static void test_fit_moves(void **state)
 {
 	struct camera_params p, base, q;
@@ -83,11 +98,7 @@ static void test_fit_moves(void **state)
 	project(&p, centre, 100, &u0, &w0);
 	/* An orbit either way keeps the pivot where it was. */
 	for (k = FIT_ORBIT_YAW; k <= FIT_ORBIT_PITCH; k++) {
-		double mv[FIT_DIM] = { 0 };
-		mv[k] = 7.0;
-		fit_view_move(v, mv, pivot, m);
-		fit_params_of(m, &base, &q);
-		project(&q, centre, 100, &u1, &w1);
+		project_moved(v, k, 7.0, pivot, &base, centre, &q, &u1, &w1);
 		assert_near(u1, u0, 1e-6);
 		assert_near(w1, w0, 1e-6);
 		assert_true(vec3_length(vec3_sub(q.eye, p.eye)) > 10.0);
@@ -95,16 +106,10 @@ static void test_fit_moves(void **state)
 	/* A dolly keeps a point beside the pivot, at its depth, in place. */
 	side = vec3_add_scaled(centre, vec3_normalize(vec3_cross(f, vec3_make(0, 0, 1))), 20.0);
 	project(&p, side, 100, &u0, &w0);
-	{
-		double mv[FIT_DIM] = { 0 };
-		mv[FIT_DOLLY] = 40.0;
-		fit_view_move(v, mv, pivot, m);
-		fit_params_of(m, &base, &q);
-		project(&q, side, 100, &u1, &w1);
-		assert_near(u1, u0, 1e-6);
-		assert_near(w1, w0, 1e-6);
-		assert_near(vec3_length(vec3_sub(q.eye, p.eye)), 40.0, 1e-9);
-	}
+	project_moved(v, FIT_DOLLY, 40.0, pivot, &base, side, &q, &u1, &w1);
+	assert_near(u1, u0, 1e-6);
+	assert_near(w1, w0, 1e-6);
+	assert_near(vec3_length(vec3_sub(q.eye, p.eye)), 40.0, 1e-9);
 }
 
 struct setup {

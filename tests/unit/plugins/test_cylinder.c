@@ -90,26 +90,16 @@ static void test_cylinder_slanted_bounds(void **state)
 
 static void test_cylinder_parse_errors(void **state)
 {
-	struct diag d;
-
 	(void)state;
-	assert_int_equal(support_parse_error("1\n64\n\n1\ncylinder\n1 2 3\n1 2 3\n2\n", &d), -RT_E_RANGE);
-	assert_int_equal(d.line, 7);
-	assert_string_equal(d.msg, "cylinder ends are the same point (it has no axis)");
-	assert_int_equal(support_parse_error("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n-2\n", &d), -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 1);
-	assert_non_null(strstr(d.msg, "cylinder radius must be > 0"));
+	assert_scene_error("1\n64\n\n1\ncylinder\n1 2 3\n1 2 3\n2\n", -RT_E_RANGE, 7, 0,
+			   "cylinder ends are the same point (it has no axis)");
+	assert_scene_error_part("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n-2\n", -RT_E_RANGE, 8, 1,
+				"cylinder radius must be > 0");
 	/* A radius whose square underflows to 0 (a line) or overflows. */
-	assert_int_equal(support_parse_error("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n1e-200\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 1);
-	assert_string_equal(d.msg, "cylinder radius must be > 0, with a square that is finite and not 0 (about 1e-154 to 1e154), found 1e-200");
-	assert_int_equal(support_parse_error("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n1e200\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
-	assert_non_null(strstr(d.msg, "found 1e+200"));
+	assert_scene_error("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n1e-200\n", -RT_E_RANGE, 8, 1,
+			   "cylinder radius must be > 0, with a square that is finite and not 0 (about 1e-154 to 1e154), found 1e-200");
+	assert_scene_error_part("1\n64\n\n1\ncylinder\n0 0 0\n0 0 1\n1e200\n", -RT_E_RANGE, 8, 0,
+				"found 1e+200");
 }
 
 static void test_cylinder_export_pov(void **state)

@@ -90,16 +90,11 @@ static void test_quad_degenerate_and_non_planar(void **state)
 
 static void test_quad_parse_errors(void **state)
 {
-	struct diag d;
-
 	(void)state;
-	assert_int_equal(support_parse_error("1\n64\n\n1\nquad\n0 0 0\n1 0 0\n1 x 0\n", &d), -RT_E_SYNTAX);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 3);
-	assert_string_equal(d.msg, "expected a number (quad corner), found 'x'");
-	assert_int_equal(support_parse_error("1\n64\n\n1\nquad\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 10);
+	assert_scene_error("1\n64\n\n1\nquad\n0 0 0\n1 0 0\n1 x 0\n", -RT_E_SYNTAX, 8, 3,
+			   "expected a number (quad corner), found 'x'");
+	assert_scene_error("1\n64\n\n1\nquad\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n", -RT_E_RANGE,
+			   10, 0, NULL);
 }
 
 static void test_quad_export_pov(void **state)

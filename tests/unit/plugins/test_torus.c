@@ -185,22 +185,14 @@ static int setup_tilted_random(void **state)
 
 static void test_torus_parse_errors(void **state)
 {
-	struct diag d;
-
 	(void)state;
-	assert_int_equal(support_parse_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 0\n3 1\n1 0 0\n0 0 0 0\n1\n0\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 7);
-	assert_string_equal(d.msg, "torus axis must be a non-zero, finite vector");
-	assert_int_equal(support_parse_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 4\n1 0 0\n0 0 0 0\n1\n0\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 3);
-	assert_non_null(strstr(d.msg, "minor radius must be > 0 and below the major radius 3"));
-	assert_int_equal(support_parse_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\nbig 1\n", &d), -RT_E_SYNTAX);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 1);
-	assert_non_null(strstr(d.msg, "torus major radius"));
+	assert_scene_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 0\n3 1\n1 0 0\n0 0 0 0\n1\n0\n", -RT_E_RANGE,
+			   7, 0, "torus axis must be a non-zero, finite vector");
+	assert_scene_error_part("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 4\n1 0 0\n0 0 0 0\n1\n0\n",
+				-RT_E_RANGE, 8, 3,
+				"minor radius must be > 0 and below the major radius 3");
+	assert_scene_error_part("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\nbig 1\n", -RT_E_SYNTAX, 8, 1,
+				"torus major radius");
 }
 
 /* An axis is any non-zero vector, however small or large its components:
@@ -235,17 +227,12 @@ static void test_torus_tiny_and_huge_axes(void **state)
 /* A minor radius whose square underflows is refused where it is read. */
 static void test_torus_tiny_minor_radius(void **state)
 {
-	struct diag d;
-
 	(void)state;
-	assert_int_equal(support_parse_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 1e-200\n1 0 0\n0 0 0 0\n1\n0\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
-	assert_int_equal(d.col, 3);
-	assert_string_equal(d.msg, "torus minor radius must be > 0, with a square that is not 0 (above about 1e-154), found 1e-200");
-	assert_int_equal(support_parse_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 -1\n1 0 0\n0 0 0 0\n1\n0\n", &d),
-			 -RT_E_RANGE);
-	assert_int_equal(d.line, 8);
+	assert_scene_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 1e-200\n1 0 0\n0 0 0 0\n1\n0\n",
+			   -RT_E_RANGE, 8, 3,
+			   "torus minor radius must be > 0, with a square that is not 0 (above about 1e-154), found 1e-200");
+	assert_scene_error("1\n64\n\n1\ntorus\n0 0 0\n0 0 1\n3 -1\n1 0 0\n0 0 0 0\n1\n0\n", -RT_E_RANGE,
+			   8, 0, NULL);
 }
 
 static void test_torus_export_pov(void **state)

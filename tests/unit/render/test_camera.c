@@ -223,13 +223,10 @@ static void init_nearfar(struct camera *c, double near, double aspect, double fo
 	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
 	struct diag d;
 
-	camera_params_default(&p);
+	support_lens_params(&p, fov, near, aspect);
 	p.eye = vec3_make(0, 0, 0);
 	p.look = vec3_make(0, 1, 0);
 	p.up = vec3_make(0, 0, 1);
-	p.fov_deg = fov;
-	p.near = near;
-	p.aspect = aspect;
 	diag_clear(&d);
 	assert_int_equal(camera_init(c, &p, size, &d), 0);
 }
@@ -243,10 +240,7 @@ static void test_camera_nearfar_fovx_180_refused(void **state)
 	struct diag d;
 
 	(void)state;
-	camera_params_default(&p);
-	p.near = 1;
-	p.aspect = 2;
-	p.fov_deg = 90;
+	support_lens_params(&p, 90, 1, 2);
 	expect_invalid(&p, 4, "horizontal field of view");
 	p.fov_deg = 89.99;
 	assert_int_equal(camera_init(&c, &p, 4, &d), 0);

@@ -96,33 +96,28 @@ static void check_pixels(const char *path, const char *const *opts)
 	scene_destroy(l.s);
 }
 
-static void test_explain_value_is_the_pixel_classic(void **state)
-{
-	(void)state;
-	support_rng_seed(30);
-	check_pixels("scenes/scene.txt", NULL);
-}
+/* A scene of each dialect: the files checked, with the stream's seed. */
+struct dialect_files {
+	unsigned seed;
+	const char *path[2];	/* the second NULL where there is one */
+};
 
-static void test_explain_value_is_the_pixel_spot(void **state)
-{
-	(void)state;
-	support_rng_seed(31);
-	check_pixels("scenes/spot.txt", NULL);
-	check_pixels("tests/data/course-files/sadathossain01.txt", NULL);
-}
+static const struct dialect_files classic = { 30, { "scenes/scene.txt", NULL } };
+static const struct dialect_files spot = {
+	31, { "scenes/spot.txt", "tests/data/course-files/sadathossain01.txt" }
+};
+static const struct dialect_files pyramid = { 32, { "tests/data/course-files/ishtiaqniloy.txt" } };
+static const struct dialect_files nearfar = { 33, { "tests/data/course-files/an-akhand.txt" } };
 
-static void test_explain_value_is_the_pixel_pyramid(void **state)
+/* check_pixels on each file of the dialect_files *state points at. */
+static void test_explain_value_is_the_pixel(void **state)
 {
-	(void)state;
-	support_rng_seed(32);
-	check_pixels("tests/data/course-files/ishtiaqniloy.txt", NULL);
-}
+	const struct dialect_files *f = *state;
+	int i;
 
-static void test_explain_value_is_the_pixel_nearfar(void **state)
-{
-	(void)state;
-	support_rng_seed(33);
-	check_pixels("tests/data/course-files/an-akhand.txt", NULL);
+	support_rng_seed(f->seed);
+	for (i = 0; i < 2 && f->path[i]; i++)
+		check_pixels(f->path[i], NULL);
 }
 
 static void test_explain_value_is_the_pixel_options(void **state)
@@ -226,9 +221,13 @@ static void test_explain_outside_the_image(void **state)
 	scene_destroy(l.s);
 }
 
-SUPPORT_MAIN(SUPPORT_TESTS(test_explain_value_is_the_pixel_classic,
-			   test_explain_value_is_the_pixel_spot,
-			   test_explain_value_is_the_pixel_pyramid,
-			   test_explain_value_is_the_pixel_nearfar,
-			   test_explain_value_is_the_pixel_options, test_explain_tree_records,
+SUPPORT_MAIN(SUPPORT_DATA_TEST("test_explain_value_is_the_pixel_classic",
+				test_explain_value_is_the_pixel, &classic),
+	     SUPPORT_DATA_TEST("test_explain_value_is_the_pixel_spot",
+				test_explain_value_is_the_pixel, &spot),
+	     SUPPORT_DATA_TEST("test_explain_value_is_the_pixel_pyramid",
+				test_explain_value_is_the_pixel, &pyramid),
+	     SUPPORT_DATA_TEST("test_explain_value_is_the_pixel_nearfar",
+				test_explain_value_is_the_pixel, &nearfar),
+	     SUPPORT_TESTS(test_explain_value_is_the_pixel_options, test_explain_tree_records,
 			   test_explain_outside_the_image))

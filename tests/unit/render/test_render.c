@@ -688,16 +688,13 @@ static void test_render_threads_bit_identical(void **state)
 {
 	static const int threads[] = { 2, 3, 7 };
 	struct scene *s = support_prepared(course_scene, true);
-	struct camera_params cp;
 	struct camera cam;
 	struct ray_counts n1, n;
 	struct image one, other;
-	struct diag d;
 	size_t i, lit = 0;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 99, &d), 0);
+	support_default_camera(&cam, 99);
 	render_region(s, &cam, 1, 0, 0, 99, 99, &one, &n1);
 	assert_int_equal(n1.primary, 99 * 99);
 	assert_true(n1.shadow > 0);
@@ -721,17 +718,14 @@ static void test_render_region_matches_full_image(void **state)
 		{ 10, 20, 50, 33 }, { 0, 0, 1, 1 }, { 95, 95, 96, 96 }, { 0, 40, 96, 41 }, { 30, 0, 31, 96 },
 	};
 	struct scene *s = support_prepared(course_scene, true);
-	struct camera_params cp;
 	struct camera cam;
 	struct ray_counts n;
 	struct image full, part;
-	struct diag d;
 	size_t k;
 	int y;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 96, &d), 0);
+	support_default_camera(&cam, 96);
 	render_region(s, &cam, 3, 0, 0, 96, 96, &full, NULL);
 	for (k = 0; k < sizeof(regions) / sizeof(regions[0]); k++) {
 		const int *g = regions[k];
@@ -781,14 +775,12 @@ static void test_render_bands_told_when_final(void **state)
 	static const int threads[] = { 1, 2, 3, 7 };
 	static const int regions[][4] = { { 0, 0, 99, 99 }, { 5, 17, 90, 80 }, { 40, 3, 41, 99 } };
 	struct scene *s = support_prepared(course_scene, true);
-	struct camera_params cp;
 	struct camera cam;
 	struct diag d;
 	size_t r, b, t;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 99, &d), 0);
+	support_default_camera(&cam, 99);
 	for (r = 0; r < sizeof(regions) / sizeof(regions[0]); r++) {
 		const int *g = regions[r];
 		struct image plain;
@@ -837,15 +829,12 @@ static void test_render_pixel_matches_trace(void **state)
 	/* The image's pixel (px, py) is render_trace of camera_ray(px, py). */
 	struct scene *s = support_prepared(course_scene, true);
 	struct render_settings rs = { 4, RT_CLAMP_LEVEL };
-	struct camera_params cp;
 	struct camera cam;
 	struct image img;
-	struct diag d;
 	int px, py;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 32, &d), 0);
+	support_default_camera(&cam, 32);
 	render_region(s, &cam, 1, 0, 0, 32, 32, &img, NULL);
 	for (py = 0; py < 32; py += 5) {
 		for (px = 0; px < 32; px += 3) {
@@ -862,7 +851,6 @@ static void test_render_pixel_matches_trace(void **state)
 static void test_render_errors_and_cancel(void **state)
 {
 	struct scene *s = support_parse(course_scene);
-	struct camera_params cp;
 	struct render_job job;
 	struct camera cam;
 	struct image img;
@@ -870,8 +858,7 @@ static void test_render_errors_and_cancel(void **state)
 	volatile sig_atomic_t cancel = 1;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 8, &d), 0);
+	support_default_camera(&cam, 8);
 	assert_int_equal(image_alloc(&img, 8, 8, &d), 0);
 	memset(&job, 0, sizeof(job));
 	job.scene = s;
@@ -1089,7 +1076,6 @@ static void test_render_full_path_matches_classic(void **state)
 {
 	struct scene *a = support_parse(course_scene), *b = support_parse(course_scene);
 	struct light l = spot_at(70, 70, 70, vec3_make(-1, -1, -1), 180);
-	struct camera_params cp;
 	struct camera cam;
 	struct image ia, ib;
 	struct diag d;
@@ -1104,8 +1090,7 @@ static void test_render_full_path_matches_classic(void **state)
 	assert_int_equal(scene_prepare(b, 1, &d), 0);
 	assert_int_equal(a->n_special_lights, 1);
 	assert_int_equal(b->n_special_lights, 0);
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 48, &d), 0);
+	support_default_camera(&cam, 48);
 	render_region(a, &cam, 2, 0, 0, 48, 48, &ia, NULL);
 	render_region(b, &cam, 2, 0, 0, 48, 48, &ib, NULL);
 	assert_memory_equal(ia.pixels, ib.pixels, (size_t)48 * 48 * 3);

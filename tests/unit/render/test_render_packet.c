@@ -88,17 +88,14 @@ static struct scene *busy_scene(bool special, bool glass, bool in_plane)
 static void render_with(const struct scene *s, const char *packets, int threads, int x0,
 			int y0, int x1, int y1, struct image *img, struct ray_counts *counts)
 {
-	struct camera_params cp;
 	struct camera cam;
 	struct render_job job;
-	struct diag d;
 
 	if (packets)
 		assert_int_equal(setenv("WHITTED_PACKETS", packets, 1), 0);
 	else
 		assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 90, &d), 0);
+	support_default_camera(&cam, 90);
 	render_job_init(&job, s, &cam, threads);
 	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 	assert_int_equal(unsetenv("WHITTED_PACKETS"), 0);

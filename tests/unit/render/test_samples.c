@@ -16,13 +16,16 @@
 #include "render_fixture.h"
 #include "support.h"
 
-static struct scene *course(void)
+/* The course scene with its floor, prepared, and *cam the default camera
+ * at size x size. */
+static struct scene *course(struct camera *cam, int size)
 {
 	struct scene *s = support_parse(course_scene);
 	struct diag d;
 
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
+	support_default_camera(cam, size);
 	return s;
 }
 
@@ -38,20 +41,25 @@ static void render(const struct scene *s, const struct camera *cam, int samples,
 	render_fixture_region(&job, x0, y0, x1, y1, img, counts);
 }
 
+/* Frees the three images a test rendered, then its scene. */
+static void release(struct scene *s, struct image *a, struct image *b, struct image *c)
+{
+	image_free(a);
+	image_free(b);
+	image_free(c);
+	scene_destroy(s);
+}
+
 static void test_samples_pixel_is_the_clamped_mean(void **state)
 {
 	static const enum clamp_mode modes[2] = { RT_CLAMP_LEVEL, RT_CLAMP_FINAL };
-	struct scene *s = course();
-	struct render_settings rs;
-	struct camera_params cp;
 	struct camera cam;
+	struct scene *s = course(&cam, 24);
+	struct render_settings rs;
 	struct image img;
-	struct diag d;
 	int m, n, px, py, i, j;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 24, &d), 0);
 	rs.recursion = s->recursion;
 	for (m = 0; m < 2; m++) {
 		rs.clamp = modes[m];
@@ -103,39 +111,28 @@ static void test_samples_are_the_big_image_centres(void **state)
 
 static void test_samples_one_is_the_default(void **state)
 {
-	struct scene *s = course();
-	struct camera_params cp;
 	struct camera cam;
+	struct scene *s = course(&cam, 40);
 	struct image a, b, c;
-	struct diag d;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 40, &d), 0);
 	render(s, &cam, 0, 1, 0, 0, 40, 40, RT_CLAMP_LEVEL, &a, NULL);
 	render(s, &cam, 1, 1, 0, 0, 40, 40, RT_CLAMP_LEVEL, &b, NULL);
 	render(s, &cam, 2, 1, 0, 0, 40, 40, RT_CLAMP_LEVEL, &c, NULL);
 	assert_memory_equal(a.pixels, b.pixels, 40 * 40 * 3);
 	assert_true(memcmp(a.pixels, c.pixels, 40 * 40 * 3) != 0);
-	image_free(&a);
-	image_free(&b);
-	image_free(&c);
-	scene_destroy(s);
+	release(s, &a, &b, &c);
 }
 
 static void test_samples_threads_and_regions(void **state)
 {
-	struct scene *s = course();
-	struct camera_params cp;
 	struct camera cam;
+	struct scene *s = course(&cam, 37);
 	struct ray_counts counts;
 	struct image full, other, part;
-	struct diag d;
 	int y;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 37, &d), 0);
 	render(s, &cam, 3, 1, 0, 0, 37, 37, RT_CLAMP_LEVEL, &full, &counts);
 	assert_true(counts.primary == 37 * 37 * 9);
 	render(s, &cam, 3, 5, 0, 0, 37, 37, RT_CLAMP_LEVEL, &other, NULL);
@@ -144,10 +141,7 @@ static void test_samples_threads_and_regions(void **state)
 	for (y = 9; y < 21; y++)
 		assert_memory_equal(part.pixels + (size_t)(y - 9) * 25 * 3,
 				    full.pixels + ((size_t)y * 37 + 5) * 3, 25 * 3);
-	image_free(&full);
-	image_free(&other);
-	image_free(&part);
-	scene_destroy(s);
+	release(s, &full, &other, &part);
 }
 
 /* WHITTED_PACKETS=1 and 0: the samples of a row in packets, and one ray
@@ -156,15 +150,11 @@ static void test_samples_threads_and_regions(void **state)
  * the region. */
 static void test_samples_packets_same_as_single_rays(void **state)
 {
-	struct scene *s = course();
-	struct camera_params cp;
 	struct camera cam;
-	struct diag d;
+	struct scene *s = course(&cam, 41);
 	int n, clamp;
 
 	(void)state;
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 41, &d), 0);
 	for (n = 2; n <= 5; n++)
 		for (clamp = 0; clamp < 2; clamp++) {
 			enum clamp_mode mode = clamp ? RT_CLAMP_FINAL : RT_CLAMP_LEVEL;

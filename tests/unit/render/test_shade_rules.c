@@ -37,31 +37,40 @@ static void assert_color(struct color c, double r, double g, double b)
 	assert_near(c.b, b, 1e-9);
 }
 
-static void test_shade_rules_none_is_render_trace(void **state)
+/* render_trace and shade_rules_trace (no rules) give the same colour, bit
+ * for bit, for every pixel of a size x size image through cam, under
+ * both clamps. */
+static void assert_rules_trace(const struct scene *s, const struct camera *cam, int size)
 {
-	struct scene *s = support_prepared(course_scene, true);
-	struct camera_params p;
-	struct camera cam;
-	struct diag d;
 	int x, y, mode;
 
-	(void)state;
-	camera_params_default(&p);
-	assert_int_equal(camera_init(&cam, &p, 64, &d), 0);
 	for (mode = 0; mode < 2; mode++) {
 		struct render_settings rs;
 		memset(&rs, 0, sizeof(rs));
 		rs.recursion = s->recursion;
 		rs.clamp = mode ? RT_CLAMP_FINAL : RT_CLAMP_LEVEL;
-		for (y = 0; y < 64; y++) {
-			for (x = 0; x < 64; x++) {
-				struct ray r = camera_ray(&cam, x, y);
+		for (y = 0; y < size; y++) {
+			for (x = 0; x < size; x++) {
+				struct ray r = camera_ray(cam, x, y);
 				struct color a = render_trace(s, &rs, &r, 1, NULL);
 				struct color b = shade_rules_trace(s, &rs, 0, &r, 1);
 				assert_memory_equal(&a, &b, sizeof(a));
 			}
 		}
 	}
+}
+
+static void test_shade_rules_none_is_render_trace(void **state)
+{
+	struct scene *s = support_prepared(course_scene, true);
+	struct camera_params p;
+	struct camera cam;
+	struct diag d;
+
+	(void)state;
+	camera_params_default(&p);
+	assert_int_equal(camera_init(&cam, &p, 64, &d), 0);
+	assert_rules_trace(s, &cam, 64);
 	scene_destroy(s);
 }
 
@@ -115,27 +124,13 @@ static void test_shade_rules_none_is_render_trace_glass_texture(void **state)
 							      "tests/textures/black.png" }, 6 },
 	};
 	size_t k;
-	int x, y, mode;
 
 	(void)state;
 	for (k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
 		struct camera cam;
 		struct scene *s = load_case(&cases[k], &cam);
 
-		for (mode = 0; mode < 2; mode++) {
-			struct render_settings rs;
-			memset(&rs, 0, sizeof(rs));
-			rs.recursion = s->recursion;
-			rs.clamp = mode ? RT_CLAMP_FINAL : RT_CLAMP_LEVEL;
-			for (y = 0; y < 48; y++) {
-				for (x = 0; x < 48; x++) {
-					struct ray r = camera_ray(&cam, x, y);
-					struct color a = render_trace(s, &rs, &r, 1, NULL);
-					struct color b = shade_rules_trace(s, &rs, 0, &r, 1);
-					assert_memory_equal(&a, &b, sizeof(a));
-				}
-			}
-		}
+		assert_rules_trace(s, &cam, 48);
 		scene_destroy(s);
 	}
 }

@@ -669,7 +669,6 @@ static struct scene *load_real(const char *name, struct notes *ns)
  * must be visible. */
 static void render_small(struct scene *s)
 {
-	struct camera_params cp;
 	struct render_job job;
 	struct camera cam;
 	struct image img;
@@ -678,8 +677,7 @@ static void render_small(struct scene *s)
 
 	assert_int_equal(scene_add_floor(s, RT_FLOOR_WIDTH, RT_FLOOR_TILE, &d), 0);
 	assert_int_equal(scene_prepare(s, 1, &d), 0);
-	camera_params_default(&cp);
-	assert_int_equal(camera_init(&cam, &cp, 8, &d), 0);
+	support_default_camera(&cam, 8);
 	assert_int_equal(image_alloc(&img, 8, 8, &d), 0);
 	render_job_init(&job, s, &cam, 2);
 	assert_int_equal(render_image(&job, &img, NULL, &d), 0);

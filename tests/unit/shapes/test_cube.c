@@ -188,10 +188,7 @@ static void test_cube_parse(void **state)
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-100, -100, 10), 0.0);
 	assert_vec3_near(box.max, vec3_make(-60, -60, 50), 0.0);
-	assert_near(s->mat.color.r, 0.0, 0.0);
-	assert_near(s->mat.color.g, 0.5, 0.0);
-	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_coefficients(&s->mat, 0.15, 0.1, 0.4, 0.45, 10.0);
+	assert_material(&s->mat, 0.0, 0.5, 1.0, 0.15, 0.1, 0.4, 0.45, 10.0);
 	shape_destroy(s);
 }
 

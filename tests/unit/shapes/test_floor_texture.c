@@ -21,28 +21,32 @@ static char white_path[64], black_path[64];
 static const uint8_t white_px[12] = { 255, 0, 0, 0, 255, 0, 0, 0, 255, 51, 102, 153 };
 static const uint8_t black_px[3] = { 10, 20, 30 };
 
-static int setup(void **state)
+/* Writes the size x size image of these pixels to path; -1 where it
+ * cannot. */
+static int write_image(const char *path, enum image_format format, int size, const uint8_t *px)
 {
 	struct image img;
 	struct diag d;
+	int rc;
 
+	if (image_alloc(&img, size, size, &d) < 0)
+		return -1;
+	memcpy(img.pixels, px, (size_t)size * size * 3);
+	rc = image_write(&img, path, format, NULL, &d);
+	image_free(&img);
+	return rc < 0 ? -1 : 0;
+}
+
+static int setup(void **state)
+{
 	(void)state;
 	if (!mkdtemp(dir))
 		return -1;
 	snprintf(white_path, sizeof(white_path), "%s/w.bmp", dir);
 	snprintf(black_path, sizeof(black_path), "%s/b.png", dir);
-	if (image_alloc(&img, 2, 2, &d) < 0)
+	if (write_image(white_path, RT_FORMAT_BMP, 2, white_px) < 0 ||
+	    write_image(black_path, RT_FORMAT_PNG, 1, black_px) < 0)
 		return -1;
-	memcpy(img.pixels, white_px, sizeof(white_px));
-	if (image_write(&img, white_path, RT_FORMAT_BMP, NULL, &d) < 0)
-		return -1;
-	image_free(&img);
-	if (image_alloc(&img, 1, 1, &d) < 0)
-		return -1;
-	memcpy(img.pixels, black_px, sizeof(black_px));
-	if (image_write(&img, black_path, RT_FORMAT_PNG, NULL, &d) < 0)
-		return -1;
-	image_free(&img);
 	return 0;
 }
 

@@ -204,25 +204,45 @@ static struct vec3 plane_gradient(const void *ctx, struct vec3 p)
 static const struct ball ball = { { 10, 10, 10 }, 10 };
 static const struct mesh_field ball_field = { ball_value, ball_gradient, &ball };
 
+/* mesh_implicit of field f over box in cells succeeds with a well-formed
+ * mesh, and check holds for each of its vertices and their normals. */
+static void check_implicit(const struct mesh_field *f, struct aabb box, const int cells[3],
+			   void (*check)(struct vec3 p, struct vec3 n))
+{
+	struct mesh m;
+	size_t i;
+
+	mesh_init(&m);
+	assert_int_equal(mesh_implicit(&m, f, box, cells), 0);
+	assert_well_formed(&m);
+	for (i = 0; i < m.n_vertices; i++) {
+		struct vec3 n, p = mesh_vertex(&m, i, &n, NULL);
+		check(p, n);
+	}
+	mesh_free(&m);
+}
+
+/* Linear interpolation across 1-unit cells: within a cell's sagitta of
+ * the true surface. */
+static void on_ball(struct vec3 p, struct vec3 n)
+{
+	assert_near(vec3_length(vec3_sub(p, ball.centre)), 10.0, 0.1);
+	assert_true(vec3_dot(n, vec3_normalize(vec3_sub(p, ball.centre))) > 0.99);
+}
+
 static void test_mesh_implicit_ball(void **state)
 {
 	struct aabb box = { { -5, -5, -5 }, { 25, 25, 25 } };
 	const int cells[3] = { 30, 30, 30 };
-	struct mesh m;
-	size_t i;
 
 	(void)state;
-	mesh_init(&m);
-	assert_int_equal(mesh_implicit(&m, &ball_field, box, cells), 0);
-	assert_well_formed(&m);
-	for (i = 0; i < m.n_vertices; i++) {
-		struct vec3 n, p = mesh_vertex(&m, i, &n, NULL);
-		/* Linear interpolation across 1-unit cells: within a cell's
-		 * sagitta of the true surface. */
-		assert_near(vec3_length(vec3_sub(p, ball.centre)), 10.0, 0.1);
-		assert_true(vec3_dot(n, vec3_normalize(vec3_sub(p, ball.centre))) > 0.99);
-	}
-	mesh_free(&m);
+	check_implicit(&ball_field, box, cells, on_ball);
+}
+
+static void in_slab(struct vec3 p, struct vec3 n)
+{
+	(void)n;
+	assert_true(p.z >= 0.0 && p.z <= 5.0);
 }
 
 /* Only the part of the surface inside the box: a slab of the ball. */
@@ -230,18 +250,15 @@ static void test_mesh_implicit_stays_in_the_box(void **state)
 {
 	struct aabb box = { { -100, -100, 0 }, { 100, 100, 5 } };
 	const int cells[3] = { 40, 40, 10 };
-	struct mesh m;
-	size_t i;
 
 	(void)state;
-	mesh_init(&m);
-	assert_int_equal(mesh_implicit(&m, &ball_field, box, cells), 0);
-	assert_well_formed(&m);
-	for (i = 0; i < m.n_vertices; i++) {
-		struct vec3 p = mesh_vertex(&m, i, NULL, NULL);
-		assert_true(p.z >= 0.0 && p.z <= 5.0);
-	}
-	mesh_free(&m);
+	check_implicit(&ball_field, box, cells, in_slab);
+}
+
+static void on_plane(struct vec3 p, struct vec3 n)
+{
+	assert_near(p.x, 3.0, 1e-5);
+	assert_vec3_near(n, vec3_make(1, 0, 0), 0.0);
 }
 
 /* A plane, exact for linear interpolation, and a surface that misses the
@@ -252,20 +269,12 @@ static void test_mesh_implicit_plane_and_empty(void **state)
 	struct aabb box = { { -10, -10, -10 }, { 10, 10, 10 } };
 	const int cells[3] = { 7, 5, 5 };
 	struct mesh m;
-	size_t i;
 
 	(void)state;
-	mesh_init(&m);
-	assert_int_equal(mesh_implicit(&m, &plane, box, cells), 0);
-	assert_well_formed(&m);
-	for (i = 0; i < m.n_vertices; i++) {
-		struct vec3 n, p = mesh_vertex(&m, i, &n, NULL);
-		assert_near(p.x, 3.0, 1e-5);
-		assert_vec3_near(n, vec3_make(1, 0, 0), 0.0);
-	}
-	mesh_free(&m);
+	check_implicit(&plane, box, cells, on_plane);
 	box.min.x = 50;
 	box.max.x = 60;
+	mesh_init(&m);
 	assert_int_equal(mesh_implicit(&m, &ball_field, box, cells), 0);
 	assert_int_equal(m.n_vertices, 0);
 	mesh_free(&m);

@@ -446,9 +446,7 @@ static void test_quadric_parse(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_int_equal(sc->n_shapes, 1);
-	s = sc->shapes[0];
-	assert_ptr_equal(s->ops, shape_ops_find("general", 7));
+	s = support_only_shape(sc, "general");
 	assert_false(shape_bounds(s, &box));
 	assert_hit(s, &r, 0.0, &t_max, 10.0, 1e-12);
 	assert_near(s->mat.color.b, 1.0, 0.0);

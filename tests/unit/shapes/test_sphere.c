@@ -145,18 +145,13 @@ static void test_sphere_parse(void **state)
 	double t_max = INFINITY;
 
 	(void)state;
-	assert_int_equal(sc->n_shapes, 1);
-	s = sc->shapes[0];
-	assert_ptr_equal(s->ops, shape_ops_find("sphere", 6));
+	s = support_only_shape(sc, "sphere");
 	assert_true(shape_bounds(s, &box));
 	assert_vec3_near(box.min, vec3_make(-3, -6, -0.5), 0.0);
 	assert_vec3_near(box.max, vec3_make(5, 2, 7.5), 0.0);
 	/* z = 3.5 - 4 = -0.5, t = 9.5. */
 	assert_hit(s, &r, 0.0, &t_max, 9.5, 1e-12);
-	assert_near(s->mat.color.r, 0.25, 0.0);
-	assert_near(s->mat.color.g, 0.5, 0.0);
-	assert_near(s->mat.color.b, 1.0, 0.0);
-	assert_coefficients(&s->mat, 0.4, 0.3, 0.2, 0.1, 7.0);
+	assert_material(&s->mat, 0.25, 0.5, 1.0, 0.4, 0.3, 0.2, 0.1, 7.0);
 	scene_destroy(sc);
 }
 

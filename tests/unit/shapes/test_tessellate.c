@@ -148,6 +148,15 @@ static void assert_mesh_of(const struct shape *s, const struct mesh_options *opt
 	mesh_free(&m);
 }
 
+/* Tessellating s over o (into m, cleared first) gives no vertex. */
+static void assert_meshes_nothing(const struct shape *s, const struct mesh_options *o,
+				  struct mesh *m)
+{
+	mesh_clear(m);
+	assert_int_equal(shape_tessellate(s, o, m), 0);
+	assert_int_equal(m->n_vertices, 0);
+}
+
 static void test_shape_tessellate_every_primitive(void **state)
 {
 	struct scene *s = support_parse(scene_text);
@@ -223,9 +232,7 @@ static void test_shape_tessellate_triangle(void **state)
 	assert_vec3_near(mesh_vertex(&m, 1, NULL, NULL), vec3_make(2, 0, 0), 0.0);
 	assert_vec3_near(mesh_vertex(&m, 2, NULL, NULL), vec3_make(0, 3, 0), 0.0);
 	/* A degenerate triangle has nothing to draw. */
-	mesh_clear(&m);
-	assert_int_equal(shape_tessellate(flat, &options, &m), 0);
-	assert_int_equal(m.n_vertices, 0);
+	assert_meshes_nothing(flat, &options, &m);
 	mesh_free(&m);
 	shape_destroy(t);
 	shape_destroy(flat);
@@ -260,9 +267,7 @@ static void test_shape_tessellate_quadric_region(void **state)
 		struct vec3 p = mesh_vertex(&m, i, NULL, NULL);
 		assert_true(p.z >= 0.0 && p.z <= 5.0);
 	}
-	mesh_clear(&m);
-	assert_int_equal(shape_tessellate(whole, &far, &m), 0);
-	assert_int_equal(m.n_vertices, 0);
+	assert_meshes_nothing(whole, &far, &m);
 	mesh_free(&m);
 	shape_destroy(whole);
 	shape_destroy(slab);
@@ -339,9 +344,7 @@ static void test_shape_tessellate_infinite_floor(void **state)
 	}
 	for (i = 0; i < m.n_vertices; i += 3)
 		assert_colours(fl, &m, i);
-	mesh_clear(&m);
-	assert_int_equal(shape_tessellate(fl, &flat, &m), 0);
-	assert_int_equal(m.n_vertices, 0);
+	assert_meshes_nothing(fl, &flat, &m);
 	mesh_free(&m);
 	shape_destroy(fl);
 }
@@ -380,9 +383,7 @@ static void test_shape_tessellate_fallback(void **state)
 		assert_true(p.z == 3 || p.z == 9);
 	}
 	/* Unbounded: nothing. */
-	mesh_clear(&m);
-	assert_int_equal(shape_tessellate(&endless, &options, &m), 0);
-	assert_int_equal(m.n_vertices, 0);
+	assert_meshes_nothing(&endless, &options, &m);
 	mesh_free(&m);
 }
 

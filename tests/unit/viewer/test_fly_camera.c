@@ -198,10 +198,7 @@ static void test_fly_camera_params_keep_near_and_aspect(void **state)
 	struct diag d;
 
 	(void)state;
-	camera_params_default(&p);
-	p.near = 1.0;
-	p.aspect = 1.77777777777778;
-	p.fov_deg = 80.00000000000001;
+	support_lens_params(&p, 80.00000000000001, 1.0, 1.77777777777778);
 	assert_int_equal(fly_camera_init(&c, &p, &d), 0);
 	assert_true(c.near == p.near && c.aspect == p.aspect && c.fov_deg == p.fov_deg);
 	/* Untouched, the parameters give back the camera it was given. */
