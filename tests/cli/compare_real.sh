@@ -39,6 +39,16 @@ json moved-found-renders 'assert j["psnr"] is None or j["psnr"] >= 28, j["psnr"]
 run compare -q "$SCENE" "$I/moved.ppm"
 check moved-text grep -q '^verdict: MATCH at the camera found$' "$T/out"
 check moved-says grep -q '^your camera differs: found --eye .* --fov .*; at that camera your image matches' "$T/out"
+# The same camera with the floor's tiles swapped: the camera is fitted
+# with the swap rendered, and there the plain reference is farther from
+# the image than at the given camera, which a note under the camera line
+# explains (a lower PSNR "there" with no word of why read as a wrong
+# camera).
+python3 "$REF" "$SCENE" "$I/moved-swapped.ppm" --size 64 --mistake floor-swapped "${CAM[@]}"
+run compare -q -s 64 "$SCENE" "$I/moved-swapped.ppm"
+check swapped-camera-note eval 'grep -q "^camera: yours differs; found --eye 3[78]\.[0-9]*,-17[12]\.[0-9]*,4[56]\." "$T/out" &&
+	grep -q "^  note: lower than at the camera given: the camera was fitted on the image.s greys" "$T/out" &&
+	grep -q "^  1\. the floor.s tiles swapped " "$T/out"'
 # --no-camera-fit judges at the given camera: it differs.
 expect_rc() { [ "$rc" -eq "$1" ]; }
 run compare -q --no-camera-fit "$SCENE" "$I/moved.ppm"
