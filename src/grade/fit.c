@@ -67,7 +67,8 @@ static const struct fit_stage fit_polish_stage = { 384, 1, 0.5, 3 };
  * level, Gauss-Newton from the best few, the FIT_HYPOTHESES best results
  * into hyp (best first; scores in hf, INFINITY past the last). */
 static int fit_first_stage(struct fit_batch *b, const struct camera_params *starts, int n_starts,
-			   const struct image *sub, double hyp[FIT_HYPOTHESES][FIT_DIM],
+			   const struct image *sub, enum fit_reach reach,
+			   double hyp[FIT_HYPOTHESES][FIT_DIM],
 			   double *hf, long *evals, struct diag *d)
 {
 	double xs[(8 + FIT_COARSE_KEEP) * FIT_DIM], fs[8 + FIT_COARSE_KEEP], cs[FIT_COARSE_KEEP];
@@ -77,7 +78,7 @@ static int fit_first_stage(struct fit_batch *b, const struct camera_params *star
 		hf[k] = INFINITY;
 	for (k = 0; k < n; k++)
 		fit_view_of(&starts[k], xs + k * FIT_DIM);
-	if ((rc = fit_coarse_search(b->job, b->level->variant, &starts[0], sub, FIT_COARSE_RADIUS,
+	if ((rc = fit_coarse_search(b->job, b->level->variant, reach, &starts[0], sub, FIT_COARSE_RADIUS,
 				    FIT_COARSE_SPACING,
 				    fit_scene_centre(b->job->scene),
 				    (double (*)[FIT_DIM])(xs + n * FIT_DIM), cs, FIT_COARSE_KEEP, d)) < 0)
@@ -138,8 +139,8 @@ static int fit_stage_level(const struct fit_stage *st, const struct image *sub, 
  * pivots from level to level; cut up, that state would travel through every
  * part. */
 static int fit_run(const struct grade_job *job, const struct camera_params *starts, int n_starts,
-		   const struct image *sub, const struct grade_variant *variant, int first,
-		   const double *bound, struct grade_fit *out, struct diag *d)
+		   const struct image *sub, const struct grade_variant *variant, enum fit_reach reach,
+		   int first, const double *bound, struct grade_fit *out, struct diag *d)
 {
 	const int n_stages = GRADE_FIT_LEVELS;
 	const int wide = sub->width > sub->height ? sub->width : sub->height;
@@ -179,7 +180,7 @@ static int fit_run(const struct grade_job *job, const struct camera_params *star
 			return rc;
 		}
 		if (s == 0) {
-			rc = fit_first_stage(&batch, starts, n_starts, sub, hyp, hf, &evals, d);
+			rc = fit_first_stage(&batch, starts, n_starts, sub, reach, hyp, hf, &evals, d);
 			for (n_hyp = 0; n_hyp < FIT_HYPOTHESES && hf[n_hyp] < INFINITY; n_hyp++)
 				;
 		} else {
@@ -276,7 +277,7 @@ int fit_screen(const struct grade_job *job, const struct camera_params *starts, 
 	 * its score recorded. */
 	for (k = 0; k < GRADE_FIT_LEVELS; k++)
 		stop[k] = k < FIT_GUARD_FIRST_STAGE ? INFINITY : -INFINITY;
-	rc = fit_run(job, starts, n_starts, sub, variant, 0, stop, &out, d);
+	rc = fit_run(job, starts, n_starts, sub, variant, FIT_REACH_NEAR, 0, stop, &out, d);
 	*score = out.levels[FIT_GUARD_FIRST_STAGE];
 	return rc;
 }
@@ -411,11 +412,11 @@ bool fit_keep_better(struct grade_fit *out, struct grade_fit *again)
  * reference's): the first, and unless it settled, a second from where it
  * ended and the dolly line. */
 int fit_passes(const struct grade_job *job, const struct camera_params *starts, int n_starts,
-	       const struct image *sub, const struct grade_variant *variant, const double *bound,
-	       struct grade_fit *out, struct diag *d)
+	       const struct image *sub, const struct grade_variant *variant, enum fit_reach reach,
+	       const double *bound, struct grade_fit *out, struct diag *d)
 {
 	struct grade_fit again;
-	int rc = fit_run(job, starts, n_starts, sub, variant, 0, bound, out, d);
+	int rc = fit_run(job, starts, n_starts, sub, variant, reach, 0, bound, out, d);
 
 	/* The first pass ends on the floor's alias nearest its coarse
 	 * guess; a second from where it ended, with one hypothesis, often
@@ -424,7 +425,7 @@ int fit_passes(const struct grade_job *job, const struct camera_params *starts, 
 	if (rc < 0 || (bound && isinf(out->score)))
 		return rc;	/* failed, or abandoned by the guard */
 	if (out->score > FIT_SETTLED_SCORE) {
-		if ((rc = fit_run(job, &out->camera, 1, sub, variant, FIT_REFIT_FIRST_STAGE, NULL,
+		if ((rc = fit_run(job, &out->camera, 1, sub, variant, reach, FIT_REFIT_FIRST_STAGE, NULL,
 				  &again, d)) < 0)
 			return rc;
 		fit_keep_better(out, &again);
@@ -434,7 +435,7 @@ int fit_passes(const struct grade_job *job, const struct camera_params *starts, 
 		if ((rc = fit_dolly_scan(job, &starts[0], sub, variant, out, &moved, d)) < 0)
 			return rc;
 		if (rc > 0) {
-			if ((rc = fit_run(job, &moved, 1, sub, variant, FIT_DOLLY_STAGE + 1, NULL,
+			if ((rc = fit_run(job, &moved, 1, sub, variant, reach, FIT_DOLLY_STAGE + 1, NULL,
 					  &again, d)) < 0)
 				return rc;
 			fit_keep_better(out, &again);
@@ -456,7 +457,8 @@ int grade_fit_camera_with(const struct grade_job *job, const struct camera_param
 	if (grade_cause_is_transform(cause) || !grade_variant_of(job, cause, form, &v) || v.corner ||
 	    v.wrap)
 		return diag_fail(d, RT_E_INVALID, "the cause has no such form to fit");
-	rc = fit_run(job, start, 1, sub, &v, FIT_REFIT_FIRST_STAGE, bound ? bound->levels : NULL,
+	rc = fit_run(job, start, 1, sub, &v, FIT_REACH_NEAR, FIT_REFIT_FIRST_STAGE,
+		     bound ? bound->levels : NULL,
 		     out, d);
 	out->cause = cause;
 	out->form = form;

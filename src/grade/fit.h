@@ -101,14 +101,21 @@ double fit_level_score(const struct fit_level *l, const struct grade_job *job,
 		       const struct camera_params *base, const double v[FIT_DIM],
 		       struct fit_scratch *s);
 
+/* How far the first look goes: the box about the start and an orbit of
+ * the scene's middle on the start's side (FIT_REACH_NEAR), or the orbit
+ * all round, nearer and farther, and no box (FIT_REACH_ROUND: the last
+ * pass, for a camera moved far). */
+enum fit_reach { FIT_REACH_NEAR, FIT_REACH_ROUND };
+
 /* The first look: eyes on a grid of the spacing within radius of the
  * start's (turned about the start's direction) and on an orbit about the
- * scene's centre (looking at it), each with the best of a few
- * directions, rolls and fields of view scored on warps of one wide
- * render (with the variant's colours when not NULL: a gamma image is
- * searched for with gamma on); the best n_out cameras (views) and their
- * scores, best first. */
+ * scene's centre (looking at it), as far as reach says, each with the
+ * best of a few directions, rolls and fields of view scored on warps of
+ * one wide render (with the variant's colours when not NULL: a gamma
+ * image is searched for with gamma on); the best n_out cameras (views)
+ * and their scores, best first. */
 int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
+		      enum fit_reach reach,
 		      const struct camera_params *start, const struct image *sub, double radius,
 		      double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d);

@@ -23,6 +23,12 @@
  * the floor's other shapes (fit_floor.c): 50, about 7 levels everywhere,
  * which no camera of the scene's floor comes near. */
 #define FIT_SHAPE_SCORE 50.0
+/* ... and one still this far after those is searched once more, plainly,
+ * from eyes all round the scene's middle (FIT_REACH_ROUND): a student
+ * who walked the camera round the objects or over them.  Last, since its
+ * first look costs as much as the others' and most images never need it;
+ * bounded by the plain pass, level by level. */
+#define FIT_FAR_SCORE 100.0
 static const struct {
 	enum grade_cause cause;
 	int form;
@@ -38,7 +44,7 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 	struct grade_variant pulls[sizeof(fit_pulling_causes) / sizeof(fit_pulling_causes[0])], shape;
 	const struct grade_variant *kept = NULL;
 	size_t k;
-	int rc = fit_passes(job, starts, n_starts, sub, NULL, NULL, out, d);
+	int rc = fit_passes(job, starts, n_starts, sub, NULL, FIT_REACH_NEAR, NULL, out, d);
 
 	if (rc < 0)
 		return rc;
@@ -46,8 +52,8 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 		struct grade_fit again;
 		if (!grade_variant_of(job, fit_pulling_causes[k].cause, fit_pulling_causes[k].form, &pulls[k]))
 			continue;
-		if ((rc = fit_passes(job, starts, n_starts, sub, &pulls[k], out->levels, &again,
-				     d)) < 0)
+		if ((rc = fit_passes(job, starts, n_starts, sub, &pulls[k], FIT_REACH_NEAR, out->levels,
+				     &again, d)) < 0)
 			return rc;
 		again.cause = fit_pulling_causes[k].cause;
 		again.form = fit_pulling_causes[k].form;
@@ -59,6 +65,14 @@ int grade_fit_camera(const struct grade_job *job, const struct camera_params *st
 			return rc;
 		if (rc > 0)
 			kept = &shape;
+	}
+	if (out->score > FIT_FAR_SCORE) {
+		struct grade_fit again;
+		if ((rc = fit_passes(job, starts, n_starts, sub, NULL, FIT_REACH_ROUND, out->levels,
+				     &again, d)) < 0)
+			return rc;
+		if (fit_keep_better(out, &again))
+			kept = NULL;
 	}
 	return fit_polish(job, &starts[0], sub, kept, out, d);
 }

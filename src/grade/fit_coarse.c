@@ -344,18 +344,42 @@ static int coarse_eye_cmp(const void *a, const void *b)
 #define COARSE_SECOND 6
 #define COARSE_SECOND_SHRINK 2.5
 
-/* The second grid: eyes around the scene's middle, looking at it, at
- * distances about the start's, from azimuths up to 60 degrees either side
- * of the start's and elevations from the floor up (a student turns the
- * camera to keep the objects in view).  Not all round: the checkerboard
- * looks the same turned by a right angle, and the views from the other
- * sides are false friends more often than true ones. */
-static const double coarse_orbit_dists[] = { 0.6, 0.85, 1.15, 1.6 };
-static const double coarse_orbit_azimuths[] = { -60, -40, -20, 0, 20, 40, 60 };
-static const double coarse_orbit_elevations[] = { 3, 12, 24, 38, 55 };
-#define COARSE_ORBIT_EYES (4 * 7 * 5)
+/* The second grid: eyes around the scene's middle, looking at it.  Near
+ * (FIT_REACH_NEAR): at distances about the start's, from azimuths up to 60
+ * degrees either side of the start's and elevations from the floor up (a
+ * student turns the camera to keep the objects in view); not all round,
+ * since the checkerboard looks the same turned by a right angle, and the
+ * views from the other sides are false friends more often than true ones.
+ * All round (FIT_REACH_ROUND), nearer, farther and higher too: the last
+ * look, only for an image no nearer camera comes near (a student who
+ * walked the camera to the other side of the objects, or over them). */
+static const double coarse_near_dists[] = { 0.6, 0.85, 1.15, 1.6 };
+static const double coarse_near_azimuths[] = { -60, -40, -20, 0, 20, 40, 60 };
+static const double coarse_near_elevations[] = { 3, 12, 24, 38, 55 };
+static const double coarse_round_dists[] = { 0.4, 0.6, 0.85, 1.15, 1.6, 2.2 };
+static const double coarse_round_azimuths[] = { -150, -120, -90, -60, -30, 0, 30, 60, 90, 120, 150, 180 };
+static const double coarse_round_elevations[] = { 3, 12, 24, 38, 55, 70 };
 
-static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
+static const struct coarse_orbit {
+	const double *dists, *azimuths, *elevations;
+	size_t n_dists, n_azimuths, n_elevations;
+	bool box;			/* the grid of eyes about the start, too */
+} coarse_orbits[] = {
+	[FIT_REACH_NEAR] = { coarse_near_dists, coarse_near_azimuths, coarse_near_elevations,
+			     COARSE_LEN(coarse_near_dists), COARSE_LEN(coarse_near_azimuths),
+			     COARSE_LEN(coarse_near_elevations), true },
+	[FIT_REACH_ROUND] = { coarse_round_dists, coarse_round_azimuths, coarse_round_elevations,
+			      COARSE_LEN(coarse_round_dists), COARSE_LEN(coarse_round_azimuths),
+			      COARSE_LEN(coarse_round_elevations), false },
+};
+
+static size_t coarse_orbit_size(const struct coarse_orbit *o)
+{
+	return o->n_dists * o->n_azimuths * o->n_elevations;
+}
+
+static int coarse_orbit_eyes(struct coarse_work *w, const struct coarse_orbit *o, struct vec3 centre,
+			     int n)
 {
 	const double rad = 3.14159265358979323846 / 180.0;
 	struct vec3 off = vec3_sub(w->start->eye, centre);
@@ -364,11 +388,11 @@ static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
 
 	if (!(dist > 1.0))
 		return n;
-	for (a = 0; a < sizeof(coarse_orbit_dists) / sizeof(double); a++)
-		for (b = 0; b < sizeof(coarse_orbit_azimuths) / sizeof(double); b++)
-			for (c = 0; c < sizeof(coarse_orbit_elevations) / sizeof(double); c++) {
-				double r = dist * coarse_orbit_dists[a], az = az0 + coarse_orbit_azimuths[b] * rad;
-				double el = coarse_orbit_elevations[c] * rad;
+	for (a = 0; a < o->n_dists; a++)
+		for (b = 0; b < o->n_azimuths; b++)
+			for (c = 0; c < o->n_elevations; c++) {
+				double r = dist * o->dists[a], az = az0 + o->azimuths[b] * rad;
+				double el = o->elevations[c] * rad;
 				struct vec3 e = vec3_add(centre, vec3_make(r * cos(el) * cos(az), r * cos(el) * sin(az),
 									   r * sin(el)));
 				if (e.z < 1.0)
@@ -384,15 +408,16 @@ static int coarse_orbit_eyes(struct coarse_work *w, struct vec3 centre, int n)
 /* Long: the coarse search's two looks (the grid of eyes, then around the
  * best) and the merge of their candidates, over one work struct. */
 int fit_coarse_search(const struct grade_job *job, const struct grade_variant *variant,
-		      const struct camera_params *start, const struct image *sub, double radius,
+		      enum fit_reach reach, const struct camera_params *start, const struct image *sub, double radius,
 		      double spacing, struct vec3 centre,
 		      double out[][FIT_DIM], double *scores, int n_out, struct diag *d)
 {
+	const struct coarse_orbit *orbit = &coarse_orbits[reach];
 	struct coarse_target t;
 	struct coarse_work w;
-	int steps = (int)floor(radius / spacing), i, j, k, n = 0, m, first_n;
-	size_t cap = (size_t)(2 * steps + 1) * (2 * steps + 1) * (2 * steps + 1) + COARSE_SECOND * 27 +
-		     COARSE_ORBIT_EYES;
+	int steps = orbit->box ? (int)floor(radius / spacing) : -1, i, j, k, n = 0, m, first_n;
+	size_t side = (size_t)(2 * steps + 1);	/* 0 without the box: steps is -1 */
+	size_t cap = side * side * side + COARSE_SECOND * 27 + coarse_orbit_size(orbit);
 	int rc;
 
 	if ((rc = coarse_target_make(&t, sub, d)) < 0) {
@@ -421,7 +446,7 @@ int fit_coarse_search(const struct grade_job *job, const struct grade_variant *v
 				w.eyes[n].dir = vec3_sub(start->look, start->eye);
 				w.eyes[n++].eye = e;
 			}
-	n = coarse_orbit_eyes(&w, centre, n);
+	n = coarse_orbit_eyes(&w, orbit, centre, n);
 	coarse_run(&w, 0, n);
 	qsort(w.eyes, (size_t)n, sizeof(*w.eyes), coarse_eye_cmp);
 	first_n = n;

@@ -72,7 +72,7 @@ static int fit_floor_try(const struct grade_job *job, const struct camera_params
 
 	if (!fit_floor_variant(job, w, c, &v))
 		return 0;
-	if ((rc = fit_passes(job, starts, n_starts, sub, &v, bound, &again, d)) < 0)
+	if ((rc = fit_passes(job, starts, n_starts, sub, &v, FIT_REACH_NEAR, bound, &again, d)) < 0)
 		return rc;
 	memcpy(levels, again.levels, sizeof(levels));
 	again.cause = fit_floor_widths[w].cause;

@@ -66,10 +66,11 @@ void fit_odd_alias(struct fit_batch *b, double *x, long *evals);
 /* The passes from the starts with the variant's colours (NULL: the
  * reference's): the first and, unless it settled, a second from where it
  * ended and the dolly line; abandoned (score INFINITY) on the first level
- * farther than bound's (NULL: never). */
+ * farther than bound's (NULL: never); the first look as far as reach
+ * says. */
 int fit_passes(const struct grade_job *job, const struct camera_params *starts, int n_starts,
-	       const struct image *sub, const struct grade_variant *variant, const double *bound,
-	       struct grade_fit *out, struct diag *d);
+	       const struct image *sub, const struct grade_variant *variant, enum fit_reach reach,
+	       const double *bound, struct grade_fit *out, struct diag *d);
 /* The first pass with the variant up to the guard's first level (the
  * coarse search, stage 0 and the aliases of stage 1): its best score
  * there (level FIT_GUARD_FIRST_STAGE) into *score, a cheap look at a

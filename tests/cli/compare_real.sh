@@ -49,6 +49,18 @@ run compare -q -s 64 "$SCENE" "$I/moved-swapped.ppm"
 check swapped-camera-note eval 'grep -q "^camera: yours differs; found --eye 3[78]\.[0-9]*,-17[12]\.[0-9]*,4[56]\." "$T/out" &&
 	grep -q "^  note: lower than at the camera given: the camera was fitted on the image.s greys" "$T/out" &&
 	grep -q "^  1\. the floor.s tiles swapped " "$T/out"'
+# A camera walked round to the far side of the objects and raised (as
+# r10 of tests/data/student-renders-more): beyond the first look's box and
+# near orbit, found by the far pass's orbit all round (before it: no
+# camera, 8 dB).  At 64 pixels the camera comes within half a unit and the
+# image within 37 dB.
+python3 "$REF" "$SCENE" "$I/far.ppm" --size 64 --eye 130,170,120 --look 0,20,10 --up -0.3,-0.4,0.87 --fov 75
+run compare -q --json "$SCENE" "$I/far.ppm"
+json far-side-found 'import re
+c = j["camera"]
+assert c["moved"] is True and c["psnr"] >= 30, c
+e = [float(v) for v in re.search(r"--eye (\S+)", c["options"]).group(1).split(",")]
+assert max(abs(a - b) for a, b in zip(e, (130, 170, 120))) < 3, e'
 # --no-camera-fit judges at the given camera: it differs.
 expect_rc() { [ "$rc" -eq "$1" ]; }
 run compare -q --no-camera-fit "$SCENE" "$I/moved.ppm"
