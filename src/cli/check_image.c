@@ -30,9 +30,12 @@
  * before (another scene, another renderer). */
 #define CHECK_MOVED_PSNR 20.0
 /* ... or its grey mean squared difference on the fit's last level is at
- * most this share of the given camera's (3 dB less: half) and at most
- * CHECK_MOVED_GREY_MSE (20 dB). */
-#define CHECK_MOVED_GREY 0.5
+ * most this share of the given camera's (6 dB less: a quarter) and at
+ * most CHECK_MOVED_GREY_MSE (20 dB).  Half (3 dB) until stop 45: r02 of
+ * tests/data/student-renders-more, a view from nearer the objects, "found"
+ * a camera far back whose greys were 0.43 of the given camera's (17 dB
+ * in colour); the cameras rightly taken this way measured 0.05 to 0.17. */
+#define CHECK_MOVED_GREY 0.25
 #define CHECK_MOVED_GREY_MSE 650.0
 
 const struct check_view *check_result_view(const struct check_reference *ref,
