@@ -3,11 +3,12 @@
 finds the camera a render was taken from and names the mistake on top.
 
 usage: moved_set.py [--seed S] [--cameras N] [--size PX] [--mistakes M,...]
-                    [--out DIR] WHITTED [WHITTED2 ...] -- SCENE [SCENE ...]
+                    [--reach R] [--out DIR] WHITTED [WHITTED2 ...] -- SCENE [SCENE ...]
 
 For each scene, N cameras moved the way the course's keyboard moves them
 (from the file's default eye 0,-200,10: walked up to about 60 units
-sideways, 90 forward and 60 up, turned up to 15 degrees, half of them
+sideways, 90 forward and 60 up, each times R, default 1: R 1.3 walks up
+to about 160 units; turned up to 15 degrees, half of them
 rolled up to 8 degrees, fov 60 to 100), and for each camera one render a
 mistake (ref_render.py's --mistake names; "none" for a correct render)
 by the independent renderer (tests/reference/ref_render.py).  Each
@@ -40,18 +41,19 @@ from mistakes_check import gate, read_ppm  # noqa: E402
 
 def render(opts, scene, name, c, cam, mistake, size):
     """The image of one camera and mistake, rendered once into the cache."""
-    img = os.path.join(opts['--out'], '%s-%s-%d-%s-%s.ppm' % (name, opts['--seed'], c, mistake, size))
+    seed = opts['--seed'] if float(opts['--reach']) == 1.0 else '%s-r%s' % (opts['--seed'], opts['--reach'])
+    img = os.path.join(opts['--out'], '%s-%s-%d-%s-%s.ppm' % (name, seed, c, mistake, size))
     if not os.path.exists(img):
         extra = [] if mistake == 'none' else ['--mistake', mistake]
         subprocess.run([sys.executable, REF, scene, img, '--size', size] + extra + cam, check=True)
     return img
 
 
-def cameras(seed, n):
+def cameras(seed, n, reach=1.0):
     r = random.Random(seed)
     out = []
     for _ in range(n):
-        eye = [r.uniform(-60, 60), -200 + r.uniform(-30, 90), 10 + r.uniform(0, 60)]
+        eye = [reach * r.uniform(-60, 60), -200 + reach * r.uniform(-30, 90), 10 + reach * r.uniform(0, 60)]
         d = [-eye[0], -eye[1], 15 - eye[2]]
         length = math.sqrt(sum(c * c for c in d))
         x, y, z = (c / length for c in d)
@@ -69,7 +71,7 @@ def cameras(seed, n):
 
 
 def main(argv):
-    opts = {'--seed': '7', '--cameras': '4', '--size': '256',
+    opts = {'--seed': '7', '--cameras': '4', '--size': '256', '--reach': '1',
             '--mistakes': 'none,floor-swapped,gamma', '--out': '/tmp/whitted-moved-set'}
     args = argv[1:]
     while args and args[0] in opts:
@@ -82,7 +84,7 @@ def main(argv):
     binaries, scenes = args[:cut], args[cut + 1:]
     size = opts['--size']
     os.makedirs(opts['--out'], exist_ok=True)
-    cams = cameras(int(opts['--seed']), int(opts['--cameras']))
+    cams = cameras(int(opts['--seed']), int(opts['--cameras']), float(opts['--reach']))
     tally = {w: {'match': [0, 0], 'named': [0, 0], 'best35': [0, 0]} for w in binaries}
     unseen = {}
     for scene in scenes:
