@@ -125,10 +125,8 @@ static int parse_args(int argc, char **argv, struct options *o)
 	o->scene_path = o->scene.path;
 	if (!o->output) {
 		o->output_owned = cli_default_output(o->scene_path, ".pov");
-		if (!o->output_owned) {
-			fprintf(stderr, "%s: error: out of memory\n", tool_name());
-			return TOOL_EXIT_FAILURE;
-		}
+		if (!o->output_owned)
+			return tool_out_of_memory();
 		o->output = o->output_owned;
 	}
 	if (!ends_with(o->output, ".pov") || ends_with(o->output, "/.pov") || strcmp(o->output, ".pov") == 0)

@@ -46,16 +46,23 @@ void check_cause_words(const struct check_reference *ref, const struct check_res
 	snprintf(buf, size, "%s and %s", a, b);
 }
 
+/* A rank's cause, or its two causes joined by sep: the id ("gamma+fov")
+ * and the fix ("...; and ...") say a pair alike, each by its own field of
+ * the causes' texts; also is NULL for a rank of one cause. */
+static void check_join_causes(const char *cause, const char *also, const char *sep, char *buf,
+			      size_t size)
+{
+	snprintf(buf, size, "%s%s%s", cause, also ? sep : "", also ? also : "");
+}
+
 void check_cause_id(const struct check_reference *ref, const struct grade_rank *r, char *buf,
 		    size_t size)
 {
 	enum clamp_mode clamp = ref->base.settings.clamp;
 
-	if (r->also == RT_CAUSE_NONE)
-		snprintf(buf, size, "%s", grade_cause_text(r->cause, clamp)->id);
-	else
-		snprintf(buf, size, "%s+%s", grade_cause_text(r->cause, clamp)->id,
-			 grade_cause_text(r->also, clamp)->id);
+	check_join_causes(grade_cause_text(r->cause, clamp)->id,
+			  r->also == RT_CAUSE_NONE ? NULL : grade_cause_text(r->also, clamp)->id, "+",
+			  buf, size);
 }
 
 void check_cause_fix(const struct check_reference *ref, const struct grade_rank *r, char *buf,
@@ -63,11 +70,9 @@ void check_cause_fix(const struct check_reference *ref, const struct grade_rank 
 {
 	enum clamp_mode clamp = ref->base.settings.clamp;
 
-	if (r->also == RT_CAUSE_NONE)
-		snprintf(buf, size, "%s", grade_cause_text(r->cause, clamp)->fix);
-	else
-		snprintf(buf, size, "%s; and %s", grade_cause_text(r->cause, clamp)->fix,
-			 grade_cause_text(r->also, clamp)->fix);
+	check_join_causes(grade_cause_text(r->cause, clamp)->fix,
+			  r->also == RT_CAUSE_NONE ? NULL : grade_cause_text(r->also, clamp)->fix,
+			  "; and ", buf, size);
 }
 
 /* "your camera differs: found --eye ...; at that camera " or "". */

@@ -154,10 +154,8 @@ static int resolve_output(struct options *o)
 				 dir[0] && dir[strlen(dir) - 1] != '/' ? "/" : "",
 				 (int)strlen(RT_FRAMES_PATTERN) - 4, RT_FRAMES_PATTERN, suffix);
 			o->output_owned = strdup(name);
-			if (!o->output_owned) {
-				fprintf(stderr, "%s: error: out of memory\n", tool_name());
-				return TOOL_EXIT_FAILURE;
-			}
+			if (!o->output_owned)
+				return tool_out_of_memory();
 			o->output = o->output_owned;
 		}
 		diag_clear(&d);
@@ -169,10 +167,8 @@ static int resolve_output(struct options *o)
 	} else if (!o->output) {
 		strcat(suffix, ".png");
 		o->output_owned = cli_default_output(o->scene_path, suffix);
-		if (!o->output_owned) {
-			fprintf(stderr, "%s: error: out of memory\n", tool_name());
-			return TOOL_EXIT_FAILURE;
-		}
+		if (!o->output_owned)
+			return tool_out_of_memory();
 		o->output = o->output_owned;
 	}
 	if (o->format == RT_FORMAT_UNKNOWN) {

@@ -60,6 +60,12 @@ int tool_unknown_option(const char *arg, const struct option *longopts)
 	return tool_usage_error("unknown option '%s'", arg);
 }
 
+int tool_out_of_memory(void)
+{
+	fprintf(stderr, "%s: error: out of memory\n", name);
+	return TOOL_EXIT_FAILURE;
+}
+
 void tool_print_diag(const struct diag *d, const char *kind)
 {
 	char line[RT_DIAG_FILE_MAX + RT_DIAG_MSG_MAX + 64];

@@ -34,6 +34,9 @@ int tool_unknown_option(const char *arg, const struct option *longopts);
 /* A file name option's value into *out: 0, or a usage error (2) for an
  * empty one ("--output: expected a file name, found ''"). */
 int tool_file_arg(const char *option, const char *arg, const char **out);
+/* "NAME: error: out of memory", for an allocation of the program's own
+ * (no library call's diag to print); returns TOOL_EXIT_FAILURE. */
+int tool_out_of_memory(void);
 /* One diagnostic as "FILE:LINE:COL: KIND: MSG" (see diag_format). */
 void tool_print_diag(const struct diag *d, const char *kind);
 /* A diag_note_fn: prints the note unless *(const bool *)quiet is true. */

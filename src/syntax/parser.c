@@ -145,15 +145,25 @@ int parser_vec3(struct parser *p, const char *what, struct vec3 *out)
 	return parser_three(p, what, parser_number, &out->x, &out->y, &out->z);
 }
 
-static int parser_unit_interval(struct parser *p, const char *what, double *out)
+/* A number that must be at least lo (more than lo where lo_excluded) and
+ * at most hi: the colour components' and the coefficients' ranges differ
+ * only in their bounds, and their errors read "WHAT must be RANGE, found
+ * V" with range ("in [0, 1]", ">= 0") as the bounds are said there. */
+static int parser_number_within(struct parser *p, const char *what, double lo, bool lo_excluded,
+				double hi, const char *range, double *out)
 {
 	int rc = parser_number(p, what, out);
 
 	if (rc < 0)
 		return rc;
-	if (*out < 0.0 || *out > 1.0)
-		return parser_fail(p, RT_E_RANGE, "%s must be in [0, 1], found %g", what, *out);
+	if ((lo_excluded ? !(*out > lo) : *out < lo) || *out > hi)
+		return parser_fail(p, RT_E_RANGE, "%s must be %s, found %g", what, range, *out);
 	return 0;
+}
+
+static int parser_unit_interval(struct parser *p, const char *what, double *out)
+{
+	return parser_number_within(p, what, 0.0, false, 1.0, "in [0, 1]", out);
 }
 
 int parser_color(struct parser *p, const char *what, struct color *out)
@@ -163,24 +173,12 @@ int parser_color(struct parser *p, const char *what, struct color *out)
 
 int parser_non_negative(struct parser *p, const char *what, double *out)
 {
-	int rc = parser_number(p, what, out);
-
-	if (rc < 0)
-		return rc;
-	if (*out < 0.0)
-		return parser_fail(p, RT_E_RANGE, "%s must be >= 0, found %g", what, *out);
-	return 0;
+	return parser_number_within(p, what, 0.0, false, INFINITY, ">= 0", out);
 }
 
 int parser_positive(struct parser *p, const char *what, double *out)
 {
-	int rc = parser_number(p, what, out);
-
-	if (rc < 0)
-		return rc;
-	if (!(*out > 0.0))
-		return parser_fail(p, RT_E_RANGE, "%s must be > 0, found %g", what, *out);
-	return 0;
+	return parser_number_within(p, what, 0.0, true, INFINITY, "> 0", out);
 }
 
 int parser_size(struct parser *p, const char *what, double *out)
