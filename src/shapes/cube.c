@@ -13,30 +13,14 @@
 #include "whitted/shape.h"
 #include "shapes/convex.h"
 
+/* A cube is a struct convex_solid alone: the box is the cube, its lower
+ * corner the planes' reference point (solid.at), its planes -x, +x, -y,
+ * +y, -z, +z. */
 enum { CUBE_FACES = 6 };
 
-/* The planes relative to lo (solid.at): -x, +x, -y, +y, -z, +z. */
-struct cube {
-	struct convex_solid solid;
-	struct vec3 lo, hi;
-};
-
-static bool cube_bounds(const struct shape *s, struct aabb *out)
-{
-	const struct cube *cu = (const struct cube *)s;
-
-	out->min = cu->lo;
-	out->max = cu->hi;
-	return true;
-}
-
-/* Only rounding can flatten a cube whose side is > 0: a side so small
- * next to the corner's coordinates that adding it changes nothing. */
 static const char *cube_degenerate(const struct shape *s)
 {
-	const struct cube *cu = (const struct cube *)s;
-
-	if (!(cu->hi.x > cu->lo.x) || !(cu->hi.y > cu->lo.y) || !(cu->hi.z > cu->lo.z))
+	if (convex_flat(s))
 		return "is too small for its coordinates (its side vanishes when added to them) "
 		       "and will not be visible";
 	return NULL;
@@ -44,12 +28,10 @@ static const char *cube_degenerate(const struct shape *s)
 
 static int cube_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)
 {
-	const struct cube *cu = (const struct cube *)s;
+	const struct aabb *box = &((const struct convex_solid *)s)->box;
+	const struct vec3 corners[2] = { box->min, box->max };
 
-	fputs("box { ", out);
-	pov_write_vector(out, cu->lo.x, cu->lo.y, cu->lo.z);
-	fputs(", ", out);
-	pov_write_vector(out, cu->hi.x, cu->hi.y, cu->hi.z);
+	shape_pov_begin(out, "box { ", corners, 2);
 	return shape_pov_finish(s, out, opt);
 }
 
@@ -57,13 +39,10 @@ static int cube_export_pov(const struct shape *s, FILE *out, const struct pov_op
 static int cube_tessellate(const struct shape *s, const struct mesh_options *opt,
 			   struct mesh *out)
 {
-	const struct cube *cu = (const struct cube *)s;
-	struct aabb box = { cu->lo, cu->hi };
-
 	(void)opt;
 	if (cube_degenerate(s))
 		return 0;
-	return mesh_box(out, box);
+	return mesh_box(out, ((const struct convex_solid *)s)->box);
 }
 
 static int cube_parse(struct parser *p, struct shape **out);
@@ -76,7 +55,7 @@ const struct shape_ops cube_ops = {
 	.normal = convex_normal,
 	.export_pov = cube_export_pov,
 	.destroy = shape_destroy_block,
-	.bounds = cube_bounds,
+	.bounds = convex_bounds,
 	.degenerate = cube_degenerate,
 	.tessellate = cube_tessellate,
 	.closed = shape_closed_always,
@@ -84,25 +63,25 @@ const struct shape_ops cube_ops = {
 
 struct shape *cube_create(struct vec3 corner, double side, const struct material *m)
 {
-	struct cube *cu = shape_alloc(sizeof(*cu), &cube_ops, m);
+	struct convex_solid *cu = shape_alloc(sizeof(*cu), &cube_ops, m);
 	struct vec3 e;
 	int axis;
 
 	if (!cu)
 		return NULL;
-	cu->lo = corner;
-	cu->hi = vec3_make(corner.x + side, corner.y + side, corner.z + side);
-	cu->solid.at = cu->lo;
-	cu->solid.faces = CUBE_FACES;
-	e = vec3_sub(cu->hi, cu->lo);
+	cu->box.min = corner;
+	cu->box.max = vec3_make(corner.x + side, corner.y + side, corner.z + side);
+	cu->at = corner;
+	cu->faces = CUBE_FACES;
+	e = vec3_sub(cu->box.max, cu->box.min);
 	for (axis = 0; axis < 3; axis++) {
 		struct vec3 n = vec3_make(axis == 0, axis == 1, axis == 2);
-		cu->solid.face[2 * axis].n = vec3_neg(n);
-		cu->solid.face[2 * axis].d = 0.0;
-		cu->solid.face[2 * axis + 1].n = n;
-		cu->solid.face[2 * axis + 1].d = vec3_component(e, axis);
+		cu->face[2 * axis].n = vec3_neg(n);
+		cu->face[2 * axis].d = 0.0;
+		cu->face[2 * axis + 1].n = n;
+		cu->face[2 * axis + 1].d = vec3_component(e, axis);
 	}
-	return &cu->solid.base;
+	return &cu->base;
 }
 
 static int cube_parse(struct parser *p, struct shape **out)

@@ -63,6 +63,8 @@ static struct shape *pyramid_new(const struct shape_ops *ops, struct vec3 lo, st
 	py->hi = hi;
 	py->apex = apex;
 	py->solid.at = apex;
+	py->solid.box.min = lo;
+	py->solid.box.max = vec3_make(hi.x, hi.y, apex.z);
 	py->solid.faces = PYRAMID_FACES;
 	py->solid.face[0] = pyramid_plane(0.0, 0.0, -1.0, h);
 	py->solid.face[1] = pyramid_plane(-h, 0.0, apex.x - lo.x, 0.0);
@@ -72,22 +74,9 @@ static struct shape *pyramid_new(const struct shape_ops *ops, struct vec3 lo, st
 	return &py->solid.base;
 }
 
-static bool pyramid_bounds(const struct shape *s, struct aabb *out)
-{
-	const struct pyramid *py = (const struct pyramid *)s;
-
-	out->min = py->lo;
-	out->max = vec3_make(py->hi.x, py->hi.y, py->apex.z);
-	return true;
-}
-
-/* Only rounding can flatten a pyramid whose sizes are > 0: a size so small
- * next to its coordinates that adding it changes nothing. */
 static const char *pyramid_degenerate(const struct shape *s)
 {
-	const struct pyramid *py = (const struct pyramid *)s;
-
-	if (!(py->apex.z > py->lo.z) || !(py->hi.x > py->lo.x) || !(py->hi.y > py->lo.y))
+	if (convex_flat(s))
 		return "is too small for its coordinates (a size vanishes when added to them) "
 		       "and will not be visible";
 	return NULL;
@@ -116,18 +105,15 @@ static int pyramid_export_pov(const struct shape *s, FILE *out, const struct pov
 {
 	const struct pyramid *py = (const struct pyramid *)s;
 	struct vec3 v[5];
-	int i, k;
+	int i;
 
 	pyramid_corners(py, v);
 	fputs("mesh {\n", out);
 	for (i = 0; i < 6; i++) {
-		fputs("  triangle { ", out);
-		for (k = 0; k < 3; k++) {
-			const struct vec3 *p = &v[pyramid_triangles[i][k]];
-			if (k > 0)
-				fputs(", ", out);
-			pov_write_vector(out, p->x, p->y, p->z);
-		}
+		const int *tri = pyramid_triangles[i];
+		const struct vec3 p[3] = { v[tri[0]], v[tri[1]], v[tri[2]] };
+
+		shape_pov_begin(out, "  triangle { ", p, 3);
 		fputs(" }\n", out);
 	}
 	fputs("  inside_vector <0,0,1>", out);
@@ -167,7 +153,7 @@ static int pyramid_centred_parse(struct parser *p, struct shape **out);
 	.normal = convex_normal,                   \
 	.export_pov = pyramid_export_pov,          \
 	.destroy = shape_destroy_block,            \
-	.bounds = pyramid_bounds,                  \
+	.bounds = convex_bounds,                   \
 	.degenerate = pyramid_degenerate,          \
 	.tessellate = pyramid_tessellate,          \
 	.closed = shape_closed_always

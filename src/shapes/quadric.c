@@ -207,13 +207,11 @@ static void quadric_write_clip(const struct quadric *q, FILE *out)
 static int quadric_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)
 {
 	const struct quadric *q = (const struct quadric *)s;
+	/* POV-Ray's order: the squares, the cross terms, the linear terms. */
+	const struct vec3 coef[3] = { { q->a, q->b, q->c }, { q->d, q->e, q->f },
+				      { q->g, q->h, q->i } };
 
-	fputs("quadric { ", out);
-	pov_write_vector(out, q->a, q->b, q->c);
-	fputs(", ", out);
-	pov_write_vector(out, q->d, q->e, q->f);
-	fputs(", ", out);
-	pov_write_vector(out, q->g, q->h, q->i);
+	shape_pov_begin(out, "quadric { ", coef, 3);
 	fputs(", ", out);
 	pov_write_number(out, q->j);
 	quadric_write_clip(q, out);

@@ -50,6 +50,18 @@ void shape_destroy_block(struct shape *s)
 	rt_free(s);
 }
 
+void shape_pov_begin(FILE *out, const char *open, const struct vec3 *v, int n)
+{
+	int i;
+
+	fputs(open, out);
+	for (i = 0; i < n; i++) {
+		if (i > 0)
+			fputs(", ", out);
+		pov_write_vector(out, v[i].x, v[i].y, v[i].z);
+	}
+}
+
 int shape_pov_finish(const struct shape *s, FILE *out, const struct pov_options *opt)
 {
 	fputs("\n  ", out);

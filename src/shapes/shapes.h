@@ -81,6 +81,11 @@ void shape_destroy_block(struct shape *s);
 
 struct parser;
 struct pov_options;
+/* The start of a POV-Ray object that the built-ins' export_pov write:
+ * open, its keyword and brace as written ("box { "), then its n leading
+ * vectors (points, or a quadric's coefficients three at a time) separated
+ * by ", ".  The caller goes on with its own terms, then shape_pov_finish. */
+void shape_pov_begin(FILE *out, const char *open, const struct vec3 *v, int n);
 /* The end that every built-in's export_pov writes after its geometry: the
  * material's texture on a line of its own and the closing brace; 0, or
  * -RT_E_IO when out has failed. */

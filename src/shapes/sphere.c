@@ -65,8 +65,7 @@ static int sphere_export_pov(const struct shape *s, FILE *out, const struct pov_
 {
 	const struct sphere *sp = (const struct sphere *)s;
 
-	fputs("sphere { ", out);
-	pov_write_vector(out, sp->centre.x, sp->centre.y, sp->centre.z);
+	shape_pov_begin(out, "sphere { ", &sp->centre, 1);
 	fputs(", ", out);
 	pov_write_number(out, sp->radius);
 	return shape_pov_finish(s, out, opt);

@@ -25,6 +25,14 @@ static struct vec3 triangle_unit_normal(const struct triangle *tr)
 	return vec3_is_finite(n) ? n : vec3_make(0.0, 0.0, 0.0);
 }
 
+/* The corners v0, v1, v2 as given. */
+static void triangle_vertices(const struct triangle *tr, struct vec3 v[3])
+{
+	v[0] = tr->v0;
+	v[1] = vec3_add(tr->v0, tr->e1);
+	v[2] = vec3_add(tr->v0, tr->e2);
+}
+
 static bool triangle_intersect(const struct shape *s, const struct ray *r,
 			       double t_min, double *t_max)
 {
@@ -61,11 +69,11 @@ static void triangle_normal_packet(const struct shape *s, const double *const p[
 
 static bool triangle_bounds(const struct shape *s, struct aabb *out)
 {
-	const struct triangle *tr = (const struct triangle *)s;
-	struct vec3 v1 = vec3_add(tr->v0, tr->e1), v2 = vec3_add(tr->v0, tr->e2);
+	struct vec3 v[3];
 
-	out->min = vec3_min(tr->v0, vec3_min(v1, v2));
-	out->max = vec3_max(tr->v0, vec3_max(v1, v2));
+	triangle_vertices((const struct triangle *)s, v);
+	out->min = vec3_min(v[0], vec3_min(v[1], v[2]));
+	out->max = vec3_max(v[0], vec3_max(v[1], v[2]));
 	return true;
 }
 
@@ -80,19 +88,14 @@ static const char *triangle_degenerate(const struct shape *s)
 
 static int triangle_export_pov(const struct shape *s, FILE *out, const struct pov_options *opt)
 {
-	const struct triangle *tr = (const struct triangle *)s;
-	struct vec3 v1 = vec3_add(tr->v0, tr->e1), v2 = vec3_add(tr->v0, tr->e2);
+	struct vec3 v[3];
 
 	if (triangle_degenerate(s)) {
 		fputs("// a degenerate triangle, invisible in whitted and POV-Ray alike\n", out);
 		return ferror(out) ? -RT_E_IO : 0;
 	}
-	fputs("triangle { ", out);
-	pov_write_vector(out, tr->v0.x, tr->v0.y, tr->v0.z);
-	fputs(", ", out);
-	pov_write_vector(out, v1.x, v1.y, v1.z);
-	fputs(", ", out);
-	pov_write_vector(out, v2.x, v2.y, v2.z);
+	triangle_vertices((const struct triangle *)s, v);
+	shape_pov_begin(out, "triangle { ", v, 3);
 	return shape_pov_finish(s, out, opt);
 }
 
@@ -105,12 +108,13 @@ static int triangle_tessellate(const struct shape *s, const struct mesh_options 
 {
 	const struct triangle *tr = (const struct triangle *)s;
 	struct vec3 n = triangle_unit_normal(tr);
-	const struct vec3 p[3] = { tr->v0, vec3_add(tr->v0, tr->e1), vec3_add(tr->v0, tr->e2) };
 	const struct vec3 normals[3] = { n, n, n };
+	struct vec3 p[3];
 
 	(void)opt;
 	if (triangle_degenerate(s))
 		return 0;
+	triangle_vertices(tr, p);
 	return mesh_add_triangle(out, p, normals);
 }
 
