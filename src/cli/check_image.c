@@ -30,12 +30,19 @@
  * before (another scene, another renderer). */
 #define CHECK_MOVED_PSNR 20.0
 /* ... or its grey mean squared difference on the fit's last level is at
- * most this share of the given camera's (6 dB less: a quarter) and at
- * most CHECK_MOVED_GREY_MSE (20 dB).  Half (3 dB) until stop 45: r02 of
- * tests/data/student-renders-more, a view from nearer the objects, "found"
- * a camera far back whose greys were 0.43 of the given camera's (17 dB
- * in colour); the cameras rightly taken this way measured 0.05 to 0.17. */
-#define CHECK_MOVED_GREY 0.25
+ * most this share of the given camera's (3 dB less: half) and at most
+ * CHECK_MOVED_GREY_MSE (20 dB). */
+#define CHECK_MOVED_GREY 0.5
+/* A camera taken on greys alone that the plain reference found and that
+ * does not quarter the given camera's grey difference (6 dB) is weak
+ * evidence: it stands only where, at that camera, the image matches or a
+ * cause comes close.  r02 of tests/data/student-renders-more, a view
+ * from nearer the objects, "found" a camera far back (0.43 of the given
+ * camera's greys, 17 dB in colour) where nothing explained it; two gamma
+ * images of the moved-camera set found their right cameras as weakly
+ * (0.34), and gamma is named there at 44 dB.  A camera fitted with a
+ * mistake rendered is borne out by that mistake's coming nearer. */
+#define CHECK_MOVED_GREY_FIRM 0.25
 #define CHECK_MOVED_GREY_MSE 650.0
 
 const struct check_view *check_result_view(const struct check_reference *ref,
@@ -107,7 +114,7 @@ static bool check_first_is_geometric_of(const struct grade_rank *ranks, size_t n
 /* The camera that took the image, when it is not the given one: fitted
  * from the given camera and the dialect's own. */
 static int check_fit(struct check_reference *ref, const struct check_view *v,
-		     struct check_result *res, struct diag *d)
+		     struct check_result *res, bool *weak, struct diag *d)
 {
 	struct camera_params starts[2];
 	struct grade_fit fit;
@@ -144,6 +151,8 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 		     ((found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
 		       fit.score <= CHECK_MOVED_GREY_MSE && found.psnr > given.psnr));
+	*weak = res->moved && !(found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) &&
+		fit.cause == RT_CAUSE_NONE && fit.score > CHECK_MOVED_GREY_FIRM * fit.start_score;
 	if (res->moved) {
 		bool shows;
 		if ((rc = check_shows_objects(ref->scene, &res->found, &shows, d)) < 0)
@@ -391,7 +400,7 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 	struct grade_rank given[GRADE_MAX_RANKS];
 	size_t n_given;
 	enum check_explained was;
-	bool textured;
+	bool textured, weak;
 	double best_given;
 	int rc;
 
@@ -422,7 +431,7 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 	was = res->explained;
 	textured = res->floor_textured;
 	best_given = res->n_ranks > 0 ? res->ranks[0].fig.psnr : res->fig.psnr;
-	if ((rc = check_fit(ref, v, res, d)) < 0)
+	if ((rc = check_fit(ref, v, res, &weak, d)) < 0)
 		return rc;
 	if (res->moved) {
 		res->n_ranks = 0;
@@ -447,6 +456,10 @@ static int check_image_read(struct check_reference *ref, struct check_result *re
 		    (rc = check_quarter_turn(ref, &res->found, &res->image, &res->fig_found, d)) < 0)
 			return rc;
 		res->n_ranks = res->fig_found.match ? 0 : res->n_ranks;
+		if (res->moved && weak && !res->fig_found.match && res->explained == CHECK_NONE) {
+			res->moved = false;
+			check_view_free(&res->found);
+		}
 	}
 	if (res->moved) {
 		if (res->fig_found.match) {
