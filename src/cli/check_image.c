@@ -119,7 +119,7 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 	struct camera_params starts[2];
 	struct grade_fit fit;
 	struct grade_figures rounded, given, found;
-	bool truncated;
+	bool truncated, nearer_in_colour;
 	int n = 1, rc;
 
 	starts[0] = v->params;
@@ -147,12 +147,13 @@ static int check_fit(struct check_reference *ref, const struct check_view *v,
 	 * camera as well) and not farther in colour: an image of another
 	 * scene can find a camera whose greys are nearer while its colours
 	 * are farther than the given camera's. */
+	nearer_in_colour = found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR;
 	res->moved = check_displacement(v, &res->found) > CHECK_MOVED_PIXELS &&
-		     ((found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) ||
+		     (nearer_in_colour ||
 		      (fit.score <= CHECK_MOVED_GREY * fit.start_score &&
 		       fit.score <= CHECK_MOVED_GREY_MSE && found.psnr > given.psnr));
-	*weak = res->moved && !(found.psnr >= given.psnr + CHECK_MOVED_GAIN && found.psnr >= CHECK_MOVED_PSNR) &&
-		fit.cause == RT_CAUSE_NONE && fit.score > CHECK_MOVED_GREY_FIRM * fit.start_score;
+	*weak = res->moved && !nearer_in_colour && fit.cause == RT_CAUSE_NONE &&
+		fit.score > CHECK_MOVED_GREY_FIRM * fit.start_score;
 	if (res->moved) {
 		bool shows;
 		if ((rc = check_shows_objects(ref->scene, &res->found, &shows, d)) < 0)
