@@ -415,8 +415,9 @@ int fit_coarse_search(const struct grade_job *job, const struct grade_variant *v
 	const struct coarse_orbit *orbit = &coarse_orbits[reach];
 	struct coarse_target t;
 	struct coarse_work w;
+	/* Without the box, steps -1 leaves its loops empty. */
 	int steps = orbit->box ? (int)floor(radius / spacing) : -1, i, j, k, n = 0, m, first_n;
-	size_t side = (size_t)(2 * steps + 1);	/* 0 without the box: steps is -1 */
+	size_t side = orbit->box ? (size_t)(2 * steps + 1) : 0;
 	size_t cap = side * side * side + COARSE_SECOND * 27 + coarse_orbit_size(orbit);
 	int rc;
 
