@@ -59,5 +59,31 @@ struct ray camera_ray(const struct camera *c, int px, int py);
  * (to within rounding; camera_ray keeps its own arithmetic so that one
  * sample per pixel keeps every bit).  For --samples. */
 struct ray camera_ray_at(const struct camera *c, double x, double y);
+/* The point of the image plane at distance 1 from the eye that (x, y) of
+ * the image shows: forward + u right + v up, the direction of
+ * camera_ray_at's ray before it is made a unit vector.  The one place the
+ * image's coordinates become a direction (inline: the camera fit's coarse
+ * search makes one for every cell of every camera it scores). */
+static inline struct vec3 camera_plane_point(const struct camera *c, double x, double y)
+{
+	double u = x * c->pixel_scale_x - c->half_width;
+	double v = c->half_height - y * c->pixel_scale;
+
+	return vec3_add(c->forward, vec3_add(vec3_scale(c->right, u), vec3_scale(c->up, v)));
+}
+
+/* Where the camera sees direction d (from the eye; a point less the eye):
+ * the (x, y) of the image, in camera_ray_at's pixels from the top left
+ * corner (a pixel's centre at its index + 0.5), camera_plane_point undone.
+ * Returns d's depth along the view, d . forward: (x, y) mean nothing
+ * unless it is > 0 (behind the eye or in its plane). */
+static inline double camera_project(const struct camera *c, struct vec3 d, double *x, double *y)
+{
+	double depth = vec3_dot(d, c->forward);
+
+	*x = (vec3_dot(d, c->right) / depth + c->half_width) / c->pixel_scale_x;
+	*y = (c->half_height - vec3_dot(d, c->up) / depth) / c->pixel_scale;
+	return depth;
+}
 
 #endif

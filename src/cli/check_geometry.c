@@ -36,14 +36,8 @@ double check_displacement(const struct check_view *a, const struct check_view *b
 				d = vec3_sub(vec3_add_scaled(r.origin, r.dir, t), b->camera.eye);
 			else
 				d = r.dir;
-			zf = vec3_dot(d, b->camera.forward);
-			if (!(zf > 0.0)) {
-				moves[n++] = INFINITY;
-				continue;
-			}
-			u = (vec3_dot(d, b->camera.right) / zf + b->camera.half_width) / b->camera.pixel_scale_x - 0.5;
-			v = (b->camera.half_height - vec3_dot(d, b->camera.up) / zf) / b->camera.pixel_scale - 0.5;
-			moves[n++] = hypot(u - px, v - py);
+			zf = camera_project(&b->camera, d, &u, &v);
+			moves[n++] = zf > 0.0 ? hypot(u - 0.5 - px, v - 0.5 - py) : INFINITY;
 		}
 	for (i = 1; i < n; i++)
 		for (k = i; k > 0 && moves[k - 1] > moves[k]; k--) {

@@ -123,11 +123,10 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 		k = (t->h - 1 - i / t->w) * t->w + i % t->w;
 		if (i % t->w == 0 && e / cells > limit)
 			return INFINITY;
-		double u = t->u[k] * cam.pixel_scale_x - cam.half_width;
-		double v = cam.half_height - t->v[k] * cam.pixel_scale;
-		struct vec3 dir = vec3_add(cam.forward, vec3_add(vec3_scale(cam.right, u),
-								 vec3_scale(cam.up, v)));
-		double df = vec3_dot(dir, wide->forward), fx, fy, ax, ay;
+		struct vec3 dir = camera_plane_point(&cam, t->u[k], t->v[k]);
+		double fx, fy, ax, ay;
+		/* The wide render's pixel coordinates of dir. */
+		double df = camera_project(wide, dir, &fx, &fy);
 		const float *q = t->cells + 3 * k;
 		int ix, iy;
 
@@ -135,9 +134,8 @@ static double coarse_score(const struct coarse_work *w, const struct camera_para
 			e += 3.0 * 128.0 * 128.0;
 			continue;
 		}
-		/* The wide render's pixel coordinates of dir. */
-		fx = (vec3_dot(dir, wide->right) / df + wide->half_width) / wide->pixel_scale_x - 0.5;
-		fy = (wide->half_height - vec3_dot(dir, wide->up) / df) / wide->pixel_scale - 0.5;
+		fx -= 0.5;
+		fy -= 0.5;
 		if (!(fx >= 0.0 && fy >= 0.0 && fx <= n - 1 && fy <= n - 1)) {
 			e += 3.0 * 128.0 * 128.0;
 			continue;

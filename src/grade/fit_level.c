@@ -367,17 +367,13 @@ int fit_level_render(const struct fit_level *l, const struct grade_job *job,
 static bool fit_project(const struct camera *c, const double *q, double *px, double *py)
 {
 	struct vec3 d = vec3_make(q[0], q[1], q[2]);
-	double zf, x, y;
 
 	if (q[3] != 0.0)
 		d = vec3_sub(d, c->eye);
-	zf = vec3_dot(d, c->forward);
-	if (!(zf > 1e-12))
+	if (!(camera_project(c, d, px, py) > 1e-12))
 		return false;
-	x = vec3_dot(d, c->right) / zf;
-	y = vec3_dot(d, c->up) / zf;
-	*px = (x + c->half_width) / c->pixel_scale_x - 0.5;
-	*py = (c->half_height - y) / c->pixel_scale - 0.5;
+	*px -= 0.5;
+	*py -= 0.5;
 	return true;
 }
 

@@ -80,7 +80,7 @@ static uint8_t grade_trunc_channel(double c)
 }
 
 /* The byte of a channel never clamped: the low 8 bits of round(255 c) (0
- * below 0, as shade_rules.c's rules_wrap), or of the truncation (int)(255 c)
+ * below 0, as shade_rules.c's shade_rules_wrap), or of the truncation (int)(255 c)
  * as C converts it, two's complement for a negative value. */
 static uint8_t grade_wrap_channel(double c, bool truncate)
 {

@@ -105,11 +105,7 @@ static inline struct ray camera_ray_through(const struct camera *c, struct vec3 
 
 struct ray camera_ray_at(const struct camera *c, double x, double y)
 {
-	double u = x * c->pixel_scale_x - c->half_width;
-	double v = c->half_height - y * c->pixel_scale;
-
-	return camera_ray_through(c, vec3_add(c->forward, vec3_add(vec3_scale(c->right, u),
-								   vec3_scale(c->up, v))));
+	return camera_ray_through(c, camera_plane_point(c, x, y));
 }
 
 /* The pixel's centre: x + 0.5 is exact for any pixel, so these are

@@ -22,6 +22,13 @@
 #include "render/shade_math.h"
 #include "scene/scene_impl.h"
 
+/* A packet's shadow rays are one accel packet, their directions one
+ * light_dirs call and the shape tests whole runs of RT_PACKET_RUN lanes. */
+typedef char packet_widths_agree[ACCEL_PACKET == RENDER_SHADOW_POINTS &&
+						 ACCEL_PACKET == LIGHT_DIRS_LANES &&
+						 ACCEL_PACKET % RT_PACKET_RUN == 0 &&
+						 ACCEL_PACKET <= RT_PACKET_MAX ? 1 : -1];
+
 #define PACKET_SIDE 4	/* PACKET_SIDE^2 <= ACCEL_PACKET */
 
 /* A packet's lanes are the walks', the camera's and the hits' alike. */
@@ -92,6 +99,40 @@ static uint32_t lean_lanes(const struct render_job *job, const struct hit_lanes 
 	memcpy(sum->eps, h->pts.eps, sizeof(sum->eps));
 	sum->lanes = lean;
 	return lean;
+}
+
+/* Traces, in packets, the shadow rays that the shading points of pts'
+ * lanes `mask` (at most ACCEL_PACKET of them; every lane filled) will ask
+ * for (shade.c's render_direct and render_direct_full), and fills in
+ * *out. */
+static void render_shadow_packets(const struct scene *s, const struct light_dirs_points *pts,
+				  uint32_t mask, struct render_shadows *out)
+{
+	size_t nl = s->n_lights < RENDER_SHADOW_LIGHTS ? s->n_lights : RENDER_SHADOW_LIGHTS, j;
+	struct light_rays rays;
+
+	if (!mask)
+		return;
+	for (j = 0; j < nl; j++) {
+		const struct light *lt = &s->lights[j];
+		struct light_dirs own, *dirs = j < RENDER_SHADOW_KEPT ? &out->dirs[j] : &own;
+		uint32_t m, asks;
+
+		/* The rays render_direct (or render_direct_full) makes, by the
+		 * same arithmetic, and only where it makes one. */
+		asks = light_dirs(pts, lt->pos, dirs, &rays) & mask;
+		if (lt->spot)
+			for (m = asks; m; m &= m - 1) {
+				int b = __builtin_ctz(m);
+				struct vec3 l = vec3_make(dirs->lx[b], dirs->ly[b], dirs->lz[b]);
+				if (!(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
+					asks &= ~((uint32_t)1 << b);
+			}
+		out->traced[j] = asks;
+		out->blocked[j] = asks ? accel_occluded_lanes(s->accel, &rays.p, asks, rays.t_min,
+							      rays.t_max)
+				       : 0;
+	}
 }
 
 /* The colours of r's rays of `active` (bits below ACCEL_PACKET) at

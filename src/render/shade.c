@@ -12,6 +12,7 @@
 #include "render/ray_tree.h"
 #include "render/shade_hit.h"
 #include "render/shade_math.h"
+#include "render/shade_rules.h"
 #include "scene/scene_impl.h"
 #include "whitted/render.h"
 
@@ -24,53 +25,56 @@
 #define SHADE_ALWAYS_INLINE
 #endif
 
-/* A packet's shadow rays are one accel packet, their directions one
- * light_dirs call and the shape tests whole runs of RT_PACKET_RUN lanes. */
-typedef char packet_widths_agree[ACCEL_PACKET == RENDER_SHADOW_POINTS &&
-						 ACCEL_PACKET == LIGHT_DIRS_LANES &&
-						 ACCEL_PACKET % RT_PACKET_RUN == 0 &&
-						 ACCEL_PACKET <= RT_PACKET_MAX ? 1 : -1];
-
-/* kd (N.L) + ks max(R.L, 0)^shininess: a light's factor on Lc C. */
-static inline double render_phong(const struct material *m, struct vec3 refl, struct vec3 l,
-				  double nl)
+/* ks max(R.L, 0)^shininess. */
+static inline double render_specular(const struct material *m, struct vec3 refl, struct vec3 l)
 {
-	double k = m->kd * nl, rl = vec3_dot(refl, l);
-
-	if (rl > 0.0)
-		k += m->ks * render_specular_power(rl, m->shininess);
-	return k;
-}
-
-/* One light's term Lc (C kd (N.L) + S ks max(R.L, 0)^shininess) where the
- * highlight's colour S is not the surface colour C (a textured floor's
- * cell colour under its texel; see shape_specular_color_at). */
-static struct color render_light_split(const struct material *m, struct color lc,
-				       struct color base, struct color spec, struct vec3 refl,
-				       struct vec3 l, double nl)
-{
-	struct color c = color_scale(color_mul(lc, base), m->kd * nl);
 	double rl = vec3_dot(refl, l);
 
-	if (rl > 0.0)
-		c = color_add(c, color_scale(color_mul(lc, spec),
-					     m->ks * render_specular_power(rl, m->shininess)));
-	return c;
+	return rl > 0.0 ? m->ks * render_specular_power(rl, m->shininess) : 0.0;
+}
+
+/* One light's term a Lc (C diffuse + S specular), diffuse being kd (N.L)
+ * and specular ks max(R.L, 0)^shininess, where the highlight's colour S
+ * is C unless spec says otherwise (a textured floor's cell colour under
+ * its texel; see shape_specular_color_at), and a = exp(-d^2 falloff) at
+ * the light's distance d, neither computed nor multiplied for a light
+ * without falloff. */
+static inline struct color render_light_term(const struct light *lt, struct color base,
+					     const struct color *spec, double diffuse,
+					     double specular, double dist)
+{
+	double k;
+
+	if (spec) {
+		struct color term = color_add(color_scale(color_mul(lt->color, base), diffuse),
+					      color_scale(color_mul(lt->color, *spec), specular));
+		return lt->falloff > 0.0 ? color_scale(term, exp(-dist * dist * lt->falloff)) : term;
+	}
+	k = diffuse + specular;
+	if (lt->falloff > 0.0)
+		k *= exp(-dist * dist * lt->falloff);
+	return color_scale(color_mul(lt->color, base), k);
 }
 
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
 				   const struct ray *r, int level, struct render_tree *tree,
 				   const struct glass_stack *glass, double weight);
+static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
+				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
+				   int level, struct render_tree *tree, const struct glass_stack *glass,
+				   double weight);
 
 /* The transmitted term kt I(P + eps T, T) of glass, one more level, as
  * a reflection is, with the glass the ray is in once through (black when
  * the tree leaves the ray out). */
 static struct color render_transmit(const struct scene *s, const struct render_settings *rs,
+				    unsigned rules, const struct shade_floor *fl,
 				    struct vec3 p, struct vec3 dir, double kt, double eps,
 				    int level, struct render_tree *tree,
 				    const struct glass_stack *glass, double weight)
 {
 	struct ray through;
+	struct color seen;
 
 	if (render_tree_cuts(tree, s, rs, weight * kt, level + 1))
 		return color_make(0.0, 0.0, 0.0);
@@ -78,7 +82,9 @@ static struct color render_transmit(const struct scene *s, const struct render_s
 	through.dir = dir;
 	if (tree->counts)
 		tree->counts->refraction++;
-	return color_scale(render_trace_in(s, rs, &through, level + 1, tree, glass, weight * kt), kt);
+	seen = rules || fl ? rules_trace_in(s, rs, rules, fl, &through, level + 1, tree, glass, weight * kt)
+			   : render_trace_in(s, rs, &through, level + 1, tree, glass, weight * kt);
+	return color_scale(seen, kt);
 }
 
 /* Lights handled together; see render_trace. */
@@ -105,36 +111,6 @@ static inline bool render_blocked(const struct scene *s, const struct render_sha
 	if (pre && light < RENDER_SHADOW_LIGHTS && (pre->traced[light] >> pre->bit & 1))
 		return pre->blocked[light] >> pre->bit & 1;
 	return render_shadowed(s, p, l, dist, eps);
-}
-
-void render_shadow_packets(const struct scene *s, const struct light_dirs_points *pts,
-			   uint32_t mask, struct render_shadows *out)
-{
-	size_t nl = s->n_lights < RENDER_SHADOW_LIGHTS ? s->n_lights : RENDER_SHADOW_LIGHTS, j;
-	struct light_rays rays;
-
-	if (!mask)
-		return;
-	for (j = 0; j < nl; j++) {
-		const struct light *lt = &s->lights[j];
-		struct light_dirs own, *dirs = j < RENDER_SHADOW_KEPT ? &out->dirs[j] : &own;
-		uint32_t m, asks;
-
-		/* The rays render_direct (or render_direct_full) makes, by the
-		 * same arithmetic, and only where it makes one. */
-		asks = light_dirs(pts, lt->pos, dirs, &rays) & mask;
-		if (lt->spot)
-			for (m = asks; m; m &= m - 1) {
-				int b = __builtin_ctz(m);
-				struct vec3 l = vec3_make(dirs->lx[b], dirs->ly[b], dirs->lz[b]);
-				if (!(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
-					asks &= ~((uint32_t)1 << b);
-			}
-		out->traced[j] = asks;
-		out->blocked[j] = asks ? accel_occluded_lanes(s->accel, &rays.p, asks, rays.t_min,
-							      rays.t_max)
-				       : 0;
-	}
 }
 
 /* The direct light at p: for each light L not shadowed and in front of the
@@ -173,8 +149,6 @@ static inline struct color render_direct(const struct scene *s, const struct mat
 			nl[i] = vec3_dot(n, l[i]);
 		}
 		for (i = 0; i < nb; i++) {
-			double k;
-
 			if (!(dist[i] > eps))
 				continue;
 			if (nl[i] <= 0.0)
@@ -183,27 +157,27 @@ static inline struct color render_direct(const struct scene *s, const struct mat
 				counts->shadow++;
 			if (render_blocked(s, pre, i0 + i, p, l[i], dist[i], eps))
 				continue;
-			if (spec) {
-				c = color_add(c, render_light_split(m, s->lights[i0 + i].color, base,
-								    *spec, refl, l[i], nl[i]));
-				continue;
-			}
-			k = render_phong(m, refl, l[i], nl[i]);
-			c = color_add(c, color_scale(color_mul(s->lights[i0 + i].color, base), k));
+			c = color_add(c, render_light_term(&s->lights[i0 + i], base, spec, m->kd * nl[i],
+							   render_specular(m, refl, l[i]), dist[i]));
 		}
 	}
 	return c;
 }
 
-/* render_direct for scenes with spotlights or falloffs, one light at a
+/* render_direct for scenes with spotlights or falloffs, and with the
+ * rules broken (shade_rules.h; 0 on a render's path), one light at a
  * time in the order added: a spotlight lights p only when the angle
  * between p - Lp and its axis is at most the cutoff (cos >= cos_cutoff;
  * tested before the shadow ray, which it spares), and a light's term is
- * scaled by a = exp(-|Lp - p|^2 falloff) when the falloff is not 0. */
-static struct color render_direct_full(const struct scene *s, const struct material *m,
-				       struct color base, const struct color *spec, struct vec3 p,
-				       struct vec3 n, struct vec3 refl, double eps,
-				       struct ray_counts *counts, const struct render_shadows *pre)
+ * scaled by a = exp(-|Lp - p|^2 falloff) when the falloff is not 0.
+ * Inline in its two instances below, so that a render's (the rules 0)
+ * keeps no test of them (4% of a spotlit scene's render otherwise). */
+SHADE_ALWAYS_INLINE
+static inline struct color render_direct_full(const struct scene *s, unsigned rules,
+				       const struct material *m, struct color base,
+				       const struct color *spec, struct vec3 p, struct vec3 n,
+				       struct vec3 refl, double eps, struct ray_counts *counts,
+				       const struct render_shadows *pre)
 {
 	struct color c = color_make(0.0, 0.0, 0.0);
 	size_t i;
@@ -211,34 +185,68 @@ static struct color render_direct_full(const struct scene *s, const struct mater
 	for (i = 0; i < s->n_lights; i++) {
 		const struct light *lt = &s->lights[i];
 		struct vec3 to_light = vec3_sub(lt->pos, p), l;
-		double dist = vec3_length(to_light), nl, k;
+		double dist = vec3_length(to_light), nl, specular;
 
 		if (!(dist > eps))
 			continue;
 		l = vec3_scale(to_light, 1.0 / dist);
 		nl = vec3_dot(n, l);
-		if (nl <= 0.0)
+		if (nl <= 0.0 && !(rules & RT_RULE_LIGHT_BEHIND))
 			continue;
 		/* p - Lp is -dist l. */
-		if (lt->spot && !(-vec3_dot(l, lt->axis) >= lt->cos_cutoff))
+		if (lt->spot && !(rules ? shade_rules_spot_lights(lt, rules, l)
+					: -vec3_dot(l, lt->axis) >= lt->cos_cutoff))
 			continue;
 		if (counts)
 			counts->shadow++;
-		if (render_blocked(s, pre, i, p, l, dist, eps))
+		if (rules ? shade_rules_shadowed(s, rules, p, l, dist, eps)
+			  : render_blocked(s, pre, i, p, l, dist, eps))
 			continue;
-		if (spec) {
-			struct color term = render_light_split(m, lt->color, base, *spec, refl, l, nl);
-			if (lt->falloff > 0.0)
-				term = color_scale(term, exp(-dist * dist * lt->falloff));
-			c = color_add(c, term);
+		specular = render_specular(m, refl, l);
+		if (rules & RT_RULE_WHITE_SPECULAR) {
+			/* The highlight Lc ks (R.L)^n, not times the colour. */
+			double a = lt->falloff > 0.0 ? exp(-dist * dist * lt->falloff) : 1.0;
+			c = color_add(c, color_scale(color_mul(lt->color, base),
+						     shade_rules_diffuse(m, rules, nl) * a));
+			c = color_add(c, color_scale(lt->color, specular * a));
 			continue;
 		}
-		k = render_phong(m, refl, l, nl);
-		if (lt->falloff > 0.0)
-			k *= exp(-dist * dist * lt->falloff);
-		c = color_add(c, color_scale(color_mul(lt->color, base), k));
+		c = color_add(c, render_light_term(lt, base, spec,
+						   rules ? shade_rules_diffuse(m, rules, nl) : m->kd * nl,
+						   specular, dist));
 	}
 	return c;
+}
+
+static struct color render_direct_spot(const struct scene *s, const struct material *m,
+				       struct color base, const struct color *spec, struct vec3 p,
+				       struct vec3 n, struct vec3 refl, double eps,
+				       struct ray_counts *counts, const struct render_shadows *pre)
+{
+	return render_direct_full(s, 0, m, base, spec, p, n, refl, eps, counts, pre);
+}
+
+static struct color render_direct_rules(const struct scene *s, unsigned rules,
+					const struct material *m, struct color base,
+					const struct color *spec, struct vec3 p, struct vec3 n,
+					struct vec3 refl, double eps)
+{
+	return render_direct_full(s, rules, m, base, spec, p, n, refl, eps, NULL, NULL);
+}
+
+/* The direct light at the point h: render_direct, or one light at a time
+ * where the scene has spotlights or falloffs, or rules are broken. */
+SHADE_ALWAYS_INLINE
+static inline struct color render_direct_at(const struct scene *s, unsigned rules,
+					    const struct material *m, const struct render_point *h,
+					    const struct color *spec, struct ray_counts *counts,
+					    const struct render_shadows *pre)
+{
+	if (rules)
+		return render_direct_rules(s, rules, m, h->base, spec, h->p, h->n, h->refl, h->eps);
+	if (s->n_special_lights)
+		return render_direct_spot(s, m, h->base, spec, h->p, h->n, h->refl, h->eps, counts, pre);
+	return render_direct(s, m, h->base, spec, h->p, h->n, h->refl, h->eps, counts, pre);
 }
 
 /* The Whitted sum of scene-format.md ("Shading") at the nearest hit P of
@@ -309,25 +317,27 @@ static inline void render_point_in(const struct ray *r, double t, const struct s
 	h->eps = render_offset(h->p);
 }
 
-/* The sum at the ray's nearest hit, the point h, with the answers to its
- * shadow rays that pre has (NULL: each traced here) and the colour its
- * reflection sees where `reflected` has it (NULL: traced here).  Inline
- * in both its
- * callers, the point's values then stay in registers as they did before
- * the packets needed the sum apart from the search (a shared function
- * cost the course example 3% more instructions). */
+/* The sum at the ray's nearest hit, the point h shaded with the finish
+ * m, with the rules broken (shade_rules.h; 0 on a render's path) and the
+ * other floor fl (NULL: the scene's), the answers to its shadow rays that
+ * pre has (NULL: each traced here) and the colour its reflection sees
+ * where `reflected` has it (NULL: traced here).  Inline in its callers,
+ * the point's values then stay in registers as they did before the
+ * packets needed the sum apart from the search (a shared function cost
+ * the course example 3% more instructions), and a render's rules, the
+ * constant 0, leave no test behind. */
 SHADE_ALWAYS_INLINE
 static inline struct color render_shade_from(const struct scene *s,
-					     const struct render_settings *rs, const struct ray *r,
+					     const struct render_settings *rs, unsigned rules,
+					     const struct shade_floor *fl, const struct ray *r,
 					     int level, struct render_tree *tree,
 					     const struct glass_stack *glass,
-					     const struct render_point *hp,
+					     const struct render_point *hp, const struct material *m,
 					     const struct render_shadows *pre,
 					     const struct color *reflected_pre, double weight)
 {
 	struct ray_counts *counts = tree->counts;
 	const struct shape *hit = hp->hit;
-	const struct material *m = &hit->mat;
 	const struct color *spec;
 	struct color c;
 	bool tir = false;
@@ -336,10 +346,7 @@ static inline struct color render_shade_from(const struct scene *s,
 
 	spec = hp->spec ? &hp->spec_color : NULL;
 	c = color_scale(hp->base, m->ka);
-	c = color_add(c, s->n_special_lights
-			       ? render_direct_full(s, m, hp->base, spec, hp->p, hp->n, hp->refl, hp->eps, counts,
-						    pre)
-			       : render_direct(s, m, hp->base, spec, hp->p, hp->n, hp->refl, hp->eps, counts, pre));
+	c = color_add(c, render_direct_at(s, rules, m, hp, spec, counts, pre));
 	if (level < rs->recursion && m->kt > 0.0) {
 		double eta;
 
@@ -361,46 +368,86 @@ static inline struct color render_shade_from(const struct scene *s,
 			if (counts)
 				counts->reflection++;
 			render_bounce(hp, &bounce);
-			reflected = render_trace_in(s, rs, &bounce, level + 1, tree, glass, weight * k);
+			if (rules & RT_RULE_UNIT_STARTS)
+				bounce.origin = vec3_add_scaled(hp->p, hp->refl, 1.0);
+			reflected = rules || fl ? rules_trace_in(s, rs, rules, fl, &bounce, level + 1, tree,
+								 glass, weight * k)
+						: render_trace_in(s, rs, &bounce, level + 1, tree, glass,
+								  weight * k);
 		}
 		c = color_add(c, color_scale(reflected, k));
 	}
 	if (level < rs->recursion && m->kt > 0.0 && !tir)
-		c = color_add(c, render_transmit(s, rs, hp->p, through, m->kt, hp->eps, level, tree,
-							       &beyond, weight));
+		c = color_add(c, render_transmit(s, rs, rules, fl, hp->p, through, m->kt, hp->eps, level,
+						 tree, &beyond, weight));
+	if (rules & RT_RULE_NEVER_CLAMP)
+		return level == 1 ? shade_rules_wrap(c) : c;
 	return rs->clamp == RT_CLAMP_LEVEL ? render_clamp(c) : c;
 }
 
-/* The sum at the ray's nearest hit, hit at t (see render_shade_from). */
+/* The colour ray r sees (see render_shade_from): black where it hits
+ * nothing, or where the tree no longer takes it (the trace is stopping,
+ * and the pixel is thrown away). */
 SHADE_ALWAYS_INLINE
-static inline struct color render_shade_at(const struct scene *s,
-					   const struct render_settings *rs, const struct ray *r,
-					   int level, struct render_tree *tree,
-					   const struct glass_stack *glass, double t,
-					   const struct shape *hit, const struct render_shadows *pre,
-					   double weight)
+static inline struct color render_trace_with(const struct scene *s,
+					     const struct render_settings *rs, unsigned rules,
+					     const struct shade_floor *fl, const struct ray *r,
+					     int level, struct render_tree *tree,
+					     const struct glass_stack *glass, double weight)
 {
+	double t = INFINITY;
+	const struct shape *hit;
+	const struct material *m;
 	struct render_point h;
 
+	if (!render_tree_take(tree))
+		return color_make(0.0, 0.0, 0.0);
+	hit = fl ? shade_rules_intersect(s, fl, r, render_offset(r->origin), &t)
+		 : accel_intersect(s->accel, r, render_offset(r->origin), &t);
+	if (!hit)
+		return color_make(0.0, 0.0, 0.0);
 	render_point_in(r, t, hit, &h);
-	return render_shade_from(s, rs, r, level, tree, glass, &h, pre, NULL, weight);
+	m = rules || fl ? shade_rules_point(s, rules, fl, level, &h) : &hit->mat;
+	return render_shade_from(s, rs, rules, fl, r, level, tree, glass, &h, m, NULL, NULL, weight);
 }
 
-/* A ray the tree no longer takes (the trace is stopping) sees black: the
- * pixel is thrown away. */
+/* A render's trace (the rules 0) and compare's (shade_rules.h), each
+ * the one sum with its rules. */
 static struct color render_trace_in(const struct scene *s, const struct render_settings *rs,
 				   const struct ray *r, int level, struct render_tree *tree,
 				   const struct glass_stack *glass, double weight)
 {
-	double t = INFINITY;
-	const struct shape *hit;
+	return render_trace_with(s, rs, 0, NULL, r, level, tree, glass, weight);
+}
 
-	if (!render_tree_take(tree))
-		return color_make(0.0, 0.0, 0.0);
-	hit = accel_intersect(s->accel, r, render_offset(r->origin), &t);
-	if (!hit)
-		return color_make(0.0, 0.0, 0.0);
-	return render_shade_at(s, rs, r, level, tree, glass, t, hit, NULL, weight);
+static struct color rules_trace_in(const struct scene *s, const struct render_settings *rs,
+				   unsigned rules, const struct shade_floor *fl, const struct ray *r,
+				   int level, struct render_tree *tree, const struct glass_stack *glass,
+				   double weight)
+{
+	return render_trace_with(s, rs, rules, fl, r, level, tree, glass, weight);
+}
+
+struct color shade_rules_trace(const struct scene *s, const struct render_settings *rs,
+			       unsigned rules, const struct ray *r, int level)
+{
+	return shade_rules_trace_floor(s, rs, rules, NULL, r, level);
+}
+
+struct color shade_rules_trace_floor(const struct scene *s, const struct render_settings *rs,
+				     unsigned rules, const struct shade_floor *fl,
+				     const struct ray *r, int level)
+{
+	static const struct glass_stack outside = { 0, { NULL } };
+	struct render_tree tree;
+	struct color c;
+
+	render_tree_init(&tree, s, rs, 0, NULL, NULL, NULL);
+	do {
+		render_tree_ray(&tree);
+		c = rules_trace_in(s, rs, rules, fl, r, level, &tree, &outside, 1.0);
+	} while (render_tree_again(&tree, c, 1));
+	return c;
 }
 
 void render_point_at(const struct ray *r, double t, const struct shape *hit,
@@ -427,5 +474,6 @@ struct color render_shade_point_tree(const struct scene *s, const struct render_
 {
 	static const struct glass_stack outside = { 0, { NULL } };
 
-	return render_shade_from(s, rs, r, level, tree, &outside, h, pre, reflected, weight);
+	return render_shade_from(s, rs, 0, NULL, r, level, tree, &outside, h, &h->hit->mat, pre,
+				 reflected, weight);
 }

@@ -44,11 +44,6 @@ struct render_shadows {
 /* The point of ray r at t on hit (not NULL). */
 void render_point_at(const struct ray *r, double t, const struct shape *hit,
 		     struct render_point *h);
-/* Traces, in packets, the shadow rays that the shading points of pts'
- * lanes `mask` (at most ACCEL_PACKET of them; every lane filled) will ask
- * for, and fills in *out. */
-void render_shadow_packets(const struct scene *s, const struct light_dirs_points *pts,
-			   uint32_t mask, struct render_shadows *out);
 /* The reflection of the ray that met point h, as the shading makes it. */
 static inline void render_bounce(const struct render_point *h, struct ray *out)
 {

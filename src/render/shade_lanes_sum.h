@@ -1,14 +1,14 @@
 /* shade_lanes (shade_lanes.h) written once over base/lanes.h's vectors:
  * the including file, compiled for one set of instructions, defines
  * SHADE_LANES_FN(name), the name it gets.  The scalar lines each step
- * stands for are shade.c's render_direct, render_phong and
- * render_shade_from. */
+ * stands for are shade.c's render_direct, render_specular,
+ * render_light_term and render_shade_from (with the rules 0). */
 #include <math.h>
 
 #include "base/lanes.h"
 #include "render/shade_lanes.h"
 
-/* Long: render_direct, render_phong and render_shade_from in vector form,
+/* Long: render_direct, render_light_term and render_shade_from in vector form,
  * step for step in their order, which is what keeps the bits equal; split,
  * the steps would no longer read against those lines. */
 static uint64_t SHADE_LANES_FN(sum)(const struct shade_lanes *in,

@@ -1,6 +1,6 @@
-/* The small formulas of the Whitted sum that shade.c (every render) and
- * shade_rules.c (the renders with a rule broken, for whitted compare)
- * share, inline so that the per-ray path calls nothing. */
+/* The small formulas of the Whitted sum that shade.c (every render, and
+ * the renders with a rule broken for whitted compare) and the packets'
+ * lanes share, inline so that the per-ray path calls nothing. */
 #ifndef RT_SHADE_MATH_H
 #define RT_SHADE_MATH_H
 

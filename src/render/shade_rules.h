@@ -1,12 +1,16 @@
 /* The Whitted sum of shade.c with the assignment's rules breakable one by
  * one: the renders of the typical students' mistakes that `whitted compare`
- * matches a submission against.  Not on the path of an ordinary render,
- * which never calls it; tests/unit/render/test_shade_rules.c checks that
- * with no rule broken it gives render_trace's colour bit for bit. */
+ * matches a submission against.  One sum: shade.c's, whose rules are the
+ * constant 0 on an ordinary render's path and a mask here, with the hooks
+ * below (shade_rules.c) where a rule bends it;
+ * tests/unit/render/test_shade_rules.c checks that with no rule broken it
+ * gives render_trace's colour bit for bit. */
 #ifndef RT_SHADE_RULES_H
 #define RT_SHADE_RULES_H
 
+#include "render/shade_hit.h"
 #include "whitted/render.h"
+#include "whitted/scene.h"
 
 /* Each a rule of scene-format.md ("Shading") left out or done as the
  * handout's literal text says; a set of them is an unsigned bit mask. */
@@ -61,5 +65,33 @@ struct shade_floor {
 struct color shade_rules_trace_floor(const struct scene *s, const struct render_settings *rs,
 				     unsigned rules, const struct shade_floor *fl,
 				     const struct ray *r, int level);
+
+/* The hooks, for shade.c's sum.  Whether the light at distance dist
+ * along l (unit) from p is hidden from it, as the rules cast the shadow
+ * ray (none, or from one unit along l). */
+bool shade_rules_shadowed(const struct scene *s, unsigned rules, struct vec3 p, struct vec3 l,
+			  double dist, double eps);
+/* Whether spotlight lt lights along l (unit, from P to the light) as the
+ * rules' cone says: the contract's test, cos(angle) >= cos(cutoff), when
+ * no spot rule is broken. */
+bool shade_rules_spot_lights(const struct light *lt, unsigned rules, struct vec3 l);
+/* kd (N.L) as the rules take it: 0 for a light behind (N.L <= 0, which
+ * only RT_RULE_LIGHT_BEHIND lets through), kd |N.L| or kd N.L for the
+ * two-sided and signed forms. */
+double shade_rules_diffuse(const struct material *m, unsigned rules, double nl);
+/* Each channel as a byte cast of the unclamped round(255 c) stores it
+ * (its low 8 bits), over 255. */
+struct color shade_rules_wrap(struct color c);
+/* The nearest hit of r beyond eps with the other floor fl (NULL, or not
+ * moved: the scene's) in place of the scene's: the scene's floor where fl
+ * covers its point, else what lies beyond it; and fl's plane where it
+ * covers a point nearer than any other hit. */
+const struct shape *shade_rules_intersect(const struct scene *s, const struct shade_floor *fl,
+					  const struct ray *r, double eps, double *t);
+/* The point h at `level` as the rules and fl colour it (fl's cells, the
+ * tiles swapped), and the finish it is shaded with (fl's on its floor). */
+const struct material *shade_rules_point(const struct scene *s, unsigned rules,
+					 const struct shade_floor *fl, int level,
+					 struct render_point *h);
 
 #endif

@@ -445,7 +445,49 @@ static void test_camera_span_is_camera_ray(void **state)
 	}
 }
 
-SUPPORT_MAIN(SUPPORT_TESTS(test_camera_defaults, test_camera_centre_pixel_looks_at_look_point,
+/* camera_project undoes camera_plane_point: the look-at point is the
+ * image's middle at its distance; the plane's right edge at 101 pixels;
+ * any point of the image comes back to within rounding, on a rolled,
+ * non-square camera too; a direction behind the eye has a negative
+ * depth. */
+static void test_camera_project(void **state)
+{
+	struct camera_params p = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 }, 0, 0, 0 };
+	struct camera c;
+	struct diag d;
+	double x, y;
+	int i, j;
+
+	(void)state;
+	init_default(&c, 101);
+	assert_near(camera_project(&c, vec3_make(0, 200, -10), &x, &y), sqrt(40100.0), 1e-12);
+	assert_near(x, 50.5, 1e-12);
+	assert_near(y, 50.5, 1e-12);
+	assert_near(camera_project(&c, vec3_add_scaled(c.forward, c.right, c.half_width), &x, &y), 1.0,
+		    1e-15);
+	assert_near(x, 101.0, 1e-12);
+	assert_near(y, 50.5, 1e-12);
+	assert_true(camera_project(&c, vec3_neg(c.forward), &x, &y) < 0.0);
+
+	p.eye = vec3_make(31.5, -7.25, 80);
+	p.look = vec3_make(-3, 12, 1.5);
+	p.up = vec3_make(0.2, 0.1, 1);
+	p.fov_deg = 37.5;
+	p.aspect = 1.5;
+	assert_int_equal(camera_init_rect(&c, &p, 300, 120, &d), 0);
+	for (j = 0; j <= 120; j += 15)
+		for (i = 0; i <= 300; i += 25) {
+			struct vec3 w = camera_plane_point(&c, i, j);
+			struct ray r = camera_ray_at(&c, i, j);
+			assert_vec3_near(vec3_normalize(w), r.dir, 1e-15);
+			/* Any point along the direction, far along it too. */
+			assert_true(camera_project(&c, vec3_scale(w, 250.0), &x, &y) > 0.0);
+			assert_near(x, i, 1e-9);
+			assert_near(y, j, 1e-9);
+		}
+}
+
+SUPPORT_MAIN(SUPPORT_TESTS(test_camera_defaults, test_camera_project, test_camera_centre_pixel_looks_at_look_point,
 			   test_camera_basis, test_camera_up_is_up_right_is_right,
 			   test_camera_field_of_view, test_camera_size_one,
 			   test_camera_custom_view, test_camera_errors,

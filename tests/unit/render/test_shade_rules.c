@@ -1,4 +1,5 @@
-/* The renders of broken rules (shade_rules.c): with no rule broken, the
+/* The renders of broken rules (shade.c's sum with shade_rules.h's flags,
+ * through shade_rules_trace, its own instance): with no rule broken, the
  * same colour as render_trace bit for bit over the whole course scene in
  * both clamping modes, and over scene files with glass and textured
  * floors at recursion 6; each rule broken, single rays through tiny scenes
