@@ -170,10 +170,11 @@ static inline struct color render_direct(const struct scene *s, const struct mat
  * between p - Lp and its axis is at most the cutoff (cos >= cos_cutoff;
  * tested before the shadow ray, which it spares), and a light's term is
  * scaled by a = exp(-|Lp - p|^2 falloff) when the falloff is not 0.
- * Inline in its two instances below, so that a render's (the rules 0)
- * keeps no test of them (4% of a spotlit scene's render otherwise). */
+ * Inline in its two instances below, a render's (compare false, the rules
+ * 0) and compare's (through the rules' hooks), so that a render's keeps no
+ * test of them (4% of a spotlit scene's render otherwise). */
 SHADE_ALWAYS_INLINE
-static inline struct color render_direct_full(const struct scene *s, unsigned rules,
+static inline struct color render_direct_full(const struct scene *s, bool compare, unsigned rules,
 				       const struct material *m, struct color base,
 				       const struct color *spec, struct vec3 p, struct vec3 n,
 				       struct vec3 refl, double eps, struct ray_counts *counts,
@@ -194,12 +195,12 @@ static inline struct color render_direct_full(const struct scene *s, unsigned ru
 		if (nl <= 0.0 && !(rules & RT_RULE_LIGHT_BEHIND))
 			continue;
 		/* p - Lp is -dist l. */
-		if (lt->spot && !(rules ? shade_rules_spot_lights(lt, rules, l)
+		if (lt->spot && !(compare ? shade_rules_spot_lights(lt, rules, l)
 					: -vec3_dot(l, lt->axis) >= lt->cos_cutoff))
 			continue;
 		if (counts)
 			counts->shadow++;
-		if (rules ? shade_rules_shadowed(s, rules, p, l, dist, eps)
+		if (compare ? shade_rules_shadowed(s, rules, p, l, dist, eps)
 			  : render_blocked(s, pre, i, p, l, dist, eps))
 			continue;
 		specular = render_specular(m, refl, l);
@@ -212,7 +213,7 @@ static inline struct color render_direct_full(const struct scene *s, unsigned ru
 			continue;
 		}
 		c = color_add(c, render_light_term(lt, base, spec,
-						   rules ? shade_rules_diffuse(m, rules, nl) : m->kd * nl,
+						   compare ? shade_rules_diffuse(m, rules, nl) : m->kd * nl,
 						   specular, dist));
 	}
 	return c;
@@ -223,7 +224,7 @@ static struct color render_direct_spot(const struct scene *s, const struct mater
 				       struct vec3 n, struct vec3 refl, double eps,
 				       struct ray_counts *counts, const struct render_shadows *pre)
 {
-	return render_direct_full(s, 0, m, base, spec, p, n, refl, eps, counts, pre);
+	return render_direct_full(s, false, 0, m, base, spec, p, n, refl, eps, counts, pre);
 }
 
 static struct color render_direct_rules(const struct scene *s, unsigned rules,
@@ -231,18 +232,21 @@ static struct color render_direct_rules(const struct scene *s, unsigned rules,
 					const struct color *spec, struct vec3 p, struct vec3 n,
 					struct vec3 refl, double eps)
 {
-	return render_direct_full(s, rules, m, base, spec, p, n, refl, eps, NULL, NULL);
+	return render_direct_full(s, true, rules, m, base, spec, p, n, refl, eps, NULL, NULL);
 }
 
 /* The direct light at the point h: render_direct, or one light at a time
- * where the scene has spotlights or falloffs, or rules are broken. */
+ * where the scene has spotlights or falloffs, or compare renders it
+ * (rules broken or another floor: its diffuse as shade_rules_diffuse
+ * takes it, 0 where N.L is not a number, as compare's renders always
+ * had it). */
 SHADE_ALWAYS_INLINE
 static inline struct color render_direct_at(const struct scene *s, unsigned rules,
-					    const struct material *m, const struct render_point *h,
-					    const struct color *spec, struct ray_counts *counts,
-					    const struct render_shadows *pre)
+					    const struct shade_floor *fl, const struct material *m,
+					    const struct render_point *h, const struct color *spec,
+					    struct ray_counts *counts, const struct render_shadows *pre)
 {
-	if (rules)
+	if (rules || fl)
 		return render_direct_rules(s, rules, m, h->base, spec, h->p, h->n, h->refl, h->eps);
 	if (s->n_special_lights)
 		return render_direct_spot(s, m, h->base, spec, h->p, h->n, h->refl, h->eps, counts, pre);
@@ -346,7 +350,7 @@ static inline struct color render_shade_from(const struct scene *s,
 
 	spec = hp->spec ? &hp->spec_color : NULL;
 	c = color_scale(hp->base, m->ka);
-	c = color_add(c, render_direct_at(s, rules, m, hp, spec, counts, pre));
+	c = color_add(c, render_direct_at(s, rules, fl, m, hp, spec, counts, pre));
 	if (level < rs->recursion && m->kt > 0.0) {
 		double eta;
 
