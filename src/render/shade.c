@@ -64,6 +64,17 @@ static struct color rules_trace_in(const struct scene *s, const struct render_se
 				   int level, struct render_tree *tree, const struct glass_stack *glass,
 				   double weight);
 
+/* A ray the sum sends on (a reflection, a transmission), traced with the
+ * sum's rules: a render's trace where they are none, compare's else. */
+static inline struct color render_trace_on(const struct scene *s, const struct render_settings *rs,
+					   unsigned rules, const struct shade_floor *fl,
+					   const struct ray *r, int level, struct render_tree *tree,
+					   const struct glass_stack *glass, double weight)
+{
+	return rules || fl ? rules_trace_in(s, rs, rules, fl, r, level, tree, glass, weight)
+			   : render_trace_in(s, rs, r, level, tree, glass, weight);
+}
+
 /* The transmitted term kt I(P + eps T, T) of glass, one more level, as
  * a reflection is, with the glass the ray is in once through (black when
  * the tree leaves the ray out). */
@@ -74,7 +85,6 @@ static struct color render_transmit(const struct scene *s, const struct render_s
 				    const struct glass_stack *glass, double weight)
 {
 	struct ray through;
-	struct color seen;
 
 	if (render_tree_cuts(tree, s, rs, weight * kt, level + 1))
 		return color_make(0.0, 0.0, 0.0);
@@ -82,9 +92,9 @@ static struct color render_transmit(const struct scene *s, const struct render_s
 	through.dir = dir;
 	if (tree->counts)
 		tree->counts->refraction++;
-	seen = rules || fl ? rules_trace_in(s, rs, rules, fl, &through, level + 1, tree, glass, weight * kt)
-			   : render_trace_in(s, rs, &through, level + 1, tree, glass, weight * kt);
-	return color_scale(seen, kt);
+	return color_scale(render_trace_on(s, rs, rules, fl, &through, level + 1, tree, glass,
+					   weight * kt),
+			   kt);
 }
 
 /* Lights handled together; see render_trace. */
@@ -374,10 +384,8 @@ static inline struct color render_shade_from(const struct scene *s,
 			render_bounce(hp, &bounce);
 			if (rules & RT_RULE_UNIT_STARTS)
 				bounce.origin = vec3_add_scaled(hp->p, hp->refl, 1.0);
-			reflected = rules || fl ? rules_trace_in(s, rs, rules, fl, &bounce, level + 1, tree,
-								 glass, weight * k)
-						: render_trace_in(s, rs, &bounce, level + 1, tree, glass,
-								  weight * k);
+			reflected = render_trace_on(s, rs, rules, fl, &bounce, level + 1, tree, glass,
+						    weight * k);
 		}
 		c = color_add(c, color_scale(reflected, k));
 	}
